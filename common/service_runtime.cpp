@@ -1,0 +1,138 @@
+#include "common/service_runtime.hpp"
+
+#include "common/clock.hpp"
+
+#include <spdlog/sinks/stdout_color_sinks.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace refloc {
+namespace {
+
+// Signal handlers can only reach static storage; this is the one flag they set.
+volatile std::sig_atomic_t g_signal_received = 0;
+
+void on_signal(int signal_number) { g_signal_received = signal_number; }
+
+void install_signal_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_signal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);  // a closed TCP peer must be an error code, not a death
+}
+
+}  // namespace
+
+std::string resolve_lcm_url(const std::string& explicit_url) {
+  if (!explicit_url.empty()) return explicit_url;
+  if (const char* env = std::getenv("LCM_DEFAULT_URL"); env && *env) return env;
+  return "udpm://239.255.76.67:7667?ttl=0";
+}
+
+void setup_logging(const std::string& service_name, bool verbose) {
+  auto logger = spdlog::stderr_color_mt(service_name);
+  logger->set_pattern("%Y-%m-%d %H:%M:%S.%e [%n] %^%l%$: %v");
+  logger->set_level(verbose ? spdlog::level::debug : spdlog::level::info);
+  spdlog::set_default_logger(logger);
+}
+
+ServiceRuntime::ServiceRuntime(std::string service_name, const std::string& lcm_url)
+    : name_(std::move(service_name)), start_monotonic_us_(monotonic_us()) {
+  const std::string url = resolve_lcm_url(lcm_url);
+  lcm_ = std::make_unique<lcm::LCM>(url);
+  if (!lcm_->good()) {
+    throw std::runtime_error("cannot open LCM at '" + url +
+                             "' (is there a multicast route? try: ip route add 224.0.0.0/4 dev lo)");
+  }
+  install_signal_handlers();
+  add_periodic(1.0, [this] { publish_heartbeat(); });
+  spdlog::info("started, pid {}, LCM {}", getpid(), url);
+}
+
+ServiceRuntime::~ServiceRuntime() = default;
+
+void ServiceRuntime::dispatch(const lcm::ReceiveBuffer* rbuf, const std::string&, RawSubscription* sub) {
+  const int64_t start = monotonic_us();
+  sub->on_message(rbuf);
+  sub->runtime->processing_.add(static_cast<double>(monotonic_us() - start));
+}
+
+void ServiceRuntime::add_periodic(double period_s, std::function<void()> fn) {
+  const auto period_us = static_cast<int64_t>(period_s * 1e6);
+  timers_.push_back({period_us > 0 ? period_us : 1, monotonic_us() + period_us, std::move(fn)});
+}
+
+void ServiceRuntime::set_state(int8_t state, const std::string& detail) {
+  if (state != state_ || detail != state_detail_) {
+    if (state == heartbeat_t::STATE_ERROR) {
+      spdlog::error("state {}: {}", static_cast<int>(state), detail);
+    } else {
+      spdlog::info("state {}{}{}", static_cast<int>(state), detail.empty() ? "" : ": ", detail);
+    }
+  }
+  state_ = state;
+  state_detail_ = detail;
+}
+
+bool ServiceRuntime::stop_requested() const { return stop_requested_ || g_signal_received != 0; }
+
+void ServiceRuntime::run_due_timers() {
+  const int64_t now = monotonic_us();
+  for (auto& t : timers_) {
+    if (now >= t.next_due_us) {
+      t.fn();
+      t.next_due_us += t.period_us;
+      // After a stall, skip missed ticks instead of firing a burst.
+      if (t.next_due_us < now) t.next_due_us = now + t.period_us;
+    }
+  }
+}
+
+void ServiceRuntime::spin_once(int timeout_ms) {
+  int64_t wait_us = static_cast<int64_t>(timeout_ms) * 1000;
+  const int64_t now = monotonic_us();
+  for (const auto& t : timers_) wait_us = std::min(wait_us, std::max<int64_t>(0, t.next_due_us - now));
+  const int rc = lcm_->handleTimeout(static_cast<int>((wait_us + 999) / 1000));
+  if (rc < 0) {
+    ++counter("lcm_handle_errors");
+  }
+  run_due_timers();
+}
+
+int ServiceRuntime::run() {
+  if (state_ == heartbeat_t::STATE_STARTING) set_state(heartbeat_t::STATE_OK);
+  while (!stop_requested()) spin_once(100);
+  set_state(heartbeat_t::STATE_STOPPING, g_signal_received ? "signal " + std::to_string(g_signal_received) : "stop requested");
+  publish_heartbeat();
+  spdlog::info("stopped: {} in, {} out, {} decode errors", messages_in_, messages_out_, decode_errors_);
+  return 0;
+}
+
+void ServiceRuntime::publish_heartbeat() {
+  heartbeat_t hb;
+  hb.utime = now_utime();
+  hb.service = name_;
+  hb.pid = static_cast<int32_t>(getpid());
+  hb.state = state_;
+  hb.state_detail = state_detail_;
+  hb.uptime_us = monotonic_us() - start_monotonic_us_;
+  hb.messages_in = messages_in_;
+  hb.messages_out = messages_out_;
+  hb.decode_errors = decode_errors_;
+  hb.processing_p50_us = static_cast<float>(processing_.percentile(0.50));
+  hb.processing_p99_us = static_cast<float>(processing_.percentile(0.99));
+  for (const auto& [name, value] : counters_) {
+    hb.counter_names.push_back(name);
+    hb.counter_values.push_back(value);
+  }
+  hb.ncounters = static_cast<int32_t>(hb.counter_names.size());
+  publish("HEARTBEAT", hb);
+}
+
+}  // namespace refloc

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Set up and run every test: install Debian dependencies if missing, build with
+# warnings as errors and AddressSanitizer/UBSan, run ctest.
+#   deploy/test.sh [extra ctest args]      (BUILD_DIR defaults to build-test)
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+deploy/install-deps.sh
+build_dir="${BUILD_DIR:-build-test}"
+jobs="${JOBS:-$(nproc)}"
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Debug -DREFLOC_WERROR=ON -DREFLOC_SANITIZE=ON
+cmake --build "$build_dir" -j "$jobs"
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+cd "$build_dir"
+ctest --output-on-failure -j "$jobs" --timeout 600 "$@"
