@@ -1,0 +1,52 @@
+#include "common/lcm_conversions.hpp"
+
+namespace refloc {
+
+laser_scan_t to_lcm(const LaserScan& scan) {
+  laser_scan_t msg;
+  msg.utime = scan.utime;
+  msg.receive_utime = scan.receive_utime;
+  msg.sensor_start_us = scan.sensor_start_us;
+  msg.sensor_transmit_us = scan.sensor_transmit_us;
+  msg.scan_counter = static_cast<int32_t>(scan.scan_counter);
+  msg.telegram_counter = static_cast<int32_t>(scan.telegram_counter);
+  msg.device_status = static_cast<int32_t>(scan.device_status);
+  msg.serial_number = static_cast<int32_t>(scan.serial_number);
+  msg.start_angle = static_cast<float>(scan.start_angle);
+  msg.angle_increment = static_cast<float>(scan.angle_increment);
+  msg.time_increment = static_cast<float>(scan.time_increment);
+  msg.scan_period = static_cast<float>(scan.scan_period);
+  msg.range_min = static_cast<float>(scan.range_min);
+  msg.range_max = static_cast<float>(scan.range_max);
+  msg.ranges = scan.ranges;
+  msg.nranges = static_cast<int32_t>(msg.ranges.size());  // LCM trusts the length field
+  msg.rssi = scan.rssi;
+  msg.nrssi = static_cast<int32_t>(msg.rssi.size());
+  msg.rssi_bits = static_cast<int8_t>(msg.nrssi > 0 ? scan.rssi_bits : 0);
+  return msg;
+}
+
+bool from_lcm(const laser_scan_t& msg, LaserScan& out) {
+  if (msg.nrssi != 0 && msg.nrssi != msg.nranges) return false;
+  if (!(msg.angle_increment != 0.0f) || msg.time_increment < 0.0f) return false;
+  out.utime = msg.utime;
+  out.receive_utime = msg.receive_utime;
+  out.sensor_start_us = msg.sensor_start_us;
+  out.sensor_transmit_us = msg.sensor_transmit_us;
+  out.scan_counter = static_cast<uint32_t>(msg.scan_counter);
+  out.telegram_counter = static_cast<uint32_t>(msg.telegram_counter);
+  out.device_status = static_cast<uint32_t>(msg.device_status);
+  out.serial_number = static_cast<uint32_t>(msg.serial_number);
+  out.start_angle = msg.start_angle;
+  out.angle_increment = msg.angle_increment;
+  out.time_increment = msg.time_increment;
+  out.scan_period = msg.scan_period;
+  out.range_min = msg.range_min;
+  out.range_max = msg.range_max;
+  out.ranges = msg.ranges;
+  out.rssi = msg.rssi;
+  out.rssi_bits = msg.rssi_bits;
+  return true;
+}
+
+}  // namespace refloc

@@ -1,0 +1,17 @@
+#pragma once
+// Conversions between plain library structs and LCM messages, used at the edge
+// by main.cpp files and tools.
+
+#include "common/laser_scan.hpp"
+#include "common/se2.hpp"
+
+#include <refloc/laser_scan_t.hpp>
+
+namespace refloc {
+
+laser_scan_t to_lcm(const LaserScan& scan);
+/// Returns false (leaving out untouched) when the message is inconsistent
+/// (nrssi neither 0 nor nranges, non-positive increment).
+bool from_lcm(const laser_scan_t& msg, LaserScan& out);
+
+}  // namespace refloc
