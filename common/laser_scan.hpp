@@ -7,6 +7,7 @@
 // angles (-45..225 deg, 90 deg straight ahead) are shifted by -90 deg, so a
 // 270 deg scan spans -135..135 deg here.
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
