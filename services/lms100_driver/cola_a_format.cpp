@@ -1,0 +1,14 @@
+#include "lms100_driver/cola_a_format.hpp"
+
+namespace refloc {
+
+std::string frame_cola_a(const std::string& payload) {
+  std::string framed;
+  framed.reserve(payload.size() + 2);
+  framed.push_back(kColaStx);
+  framed += payload;
+  framed.push_back(kColaEtx);
+  return framed;
+}
+
+}  // namespace refloc
