@@ -35,7 +35,7 @@ JsonConfig JsonConfig::load_file(const std::string& path) {
   nlohmann::json document;
   try {
     document = nlohmann::json::parse(buffer.str());
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse errors and number overflow
     throw ConfigError(fmt::format("{}: not valid JSON: {}", path, e.what()));
   }
   if (!document.is_object()) {
