@@ -1,0 +1,58 @@
+#pragma once
+// Circle fits of one cluster's laser points: the paper's free algebraic fit and our
+// Gauss-Newton fit of the centre alone with the reflector radius known.
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace refloc {
+
+/// One beam of a cluster as the fits see it.
+struct FitBeam {
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();      ///< laser_p of the echo [m]
+  Eigen::Vector2d direction = Eigen::Vector2d::UnitX(); ///< unit beam direction
+  double range = 0.0;                                   ///< measured range [m]
+  double weight = 1.0;                                  ///< 1 / sigma_range^2 [1/m^2]
+};
+
+struct CircleFit {
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();   ///< [m]
+  double radius = 0.0;                                ///< [m]
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero(); ///< of center [m^2]
+  double radius_sigma = 0.0;  ///< standard deviation of radius, free-radius fits only [m]
+  double chi2 = 0.0;          ///< sum of weighted squared residuals at the solution
+  int iterations = 0;
+};
+
+struct KnownRadiusFitConfig {
+  int max_iterations = 10;
+  double step_tolerance = 1e-6;  ///< stop when the centre moves less [m]
+  /// Floor on the cosine of the incidence angle: near-grazing beams are where beam width
+  /// and mixed pixels hurt most, so their leverage is capped (cos 72.5 deg).
+  double min_incidence_cos = 0.3;
+};
+
+/// Kasa algebraic least-squares circle; false for fewer than 3 points or collinear points.
+/// covariance uses isotropic point noise point_sigma [m].
+bool fit_circle_algebraic(const std::vector<FitBeam>& beams, double point_sigma, CircleFit& out);
+
+/// Centre of a circle of known radius [m] seen by these beams: Gauss-Newton on range
+/// residuals (first-order, with the incidence floor), started behind the points as seen
+/// from the sensor, so one or two beams still give the physically right centre.
+/// covariance = (J^T W J)^-1. False when there are no beams or the result is not finite.
+bool fit_circle_known_radius(const std::vector<FitBeam>& beams, double radius,
+                             const KnownRadiusFitConfig& config, CircleFit& out);
+
+/// Same residuals with the radius free as well, started from (center, radius); fills
+/// radius and radius_sigma. Needs at least 4 beams.
+bool fit_circle_free_radius(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center,
+                            double radius, const KnownRadiusFitConfig& config, CircleFit& out);
+
+/// Range residual of one beam against a circle, with the incidence floor [m]; also its
+/// derivative with respect to the centre (d residual / d radius = -1 / cos).
+double range_residual(const FitBeam& beam, const Eigen::Vector2d& center, double radius,
+                      double min_incidence_cos, Eigen::Vector2d* d_center = nullptr,
+                      double* d_radius = nullptr);
+
+}  // namespace refloc

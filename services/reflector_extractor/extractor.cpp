@@ -1,0 +1,175 @@
+#include "reflector_extractor/extractor.hpp"
+
+#include "reflector_extractor/energy_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace refloc {
+
+ExtractorConfig ExtractorConfig::paper() {
+  ExtractorConfig config;
+  config.mode = Mode::kPaper;
+  // The paper screens by energy first and clusters the surviving points.
+  config.clustering.max_gap_beams = -1;
+  config.min_beams = 3;  // a circle needs three points
+  return config;
+}
+
+ReflectorExtractor::ReflectorExtractor(ExtractorConfig config)
+    : config_(config), clusterer_(config.clustering) {
+  detections_.reserve(64);
+  clusters_.reserve(64);
+  beams_.reserve(128);
+  beam_rssi_.reserve(128);
+}
+
+const std::vector<ReflectorDetection>& ReflectorExtractor::extract(const LaserScan& scan) {
+  stats_ = ExtractionStats{};
+  detections_.clear();
+  select_high_energy_beams(scan, config_.energy_threshold_8bit, high_energy_);
+  clusterer_.cluster(scan, high_energy_, clusters_);
+  for (const BeamCluster& cluster : clusters_) {
+    ++stats_.clusters_considered;
+    if (config_.mode == ExtractorConfig::Mode::kPaper) {
+      process_cluster_paper(scan, cluster);
+    } else {
+      process_cluster_default(scan, cluster);
+    }
+  }
+  return detections_;
+}
+
+void ReflectorExtractor::gather_beams(const LaserScan& scan, const BeamCluster& cluster) {
+  beams_.clear();
+  beam_rssi_.clear();
+  const double weight = 1.0 / (config_.clustering.range_sigma * config_.clustering.range_sigma);
+  for (int i = cluster.first; i <= cluster.last; ++i) {
+    const size_t k = static_cast<size_t>(i);
+    if (high_energy_[k] == 0) continue;
+    const double angle = scan.beam_angle(k);
+    FitBeam b;
+    b.direction = Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    b.range = static_cast<double>(scan.ranges[k]);
+    b.point = b.range * b.direction;
+    b.weight = weight;
+    beams_.push_back(b);
+    beam_rssi_.push_back(rssi_8bit(scan, k));
+  }
+}
+
+bool ReflectorExtractor::occluded(const LaserScan& scan, const BeamCluster& cluster) const {
+  const int n = static_cast<int>(scan.ranges.size());
+  const int neighbours[2] = {cluster.first - 1, cluster.last + 1};
+  const int edges[2] = {cluster.first, cluster.last};
+  for (int side = 0; side < 2; ++side) {
+    const int j = neighbours[side];
+    if (j < 0 || j >= n) continue;
+    const size_t k = static_cast<size_t>(j);
+    const double r = static_cast<double>(scan.ranges[k]);
+    const bool dazzled = r > 0.0 && r < scan.range_min;
+    if (dazzled && config_.reject_next_to_dazzled) return true;
+    if (config_.reject_occluded && is_echo(scan, k) &&
+        r < static_cast<double>(scan.ranges[static_cast<size_t>(edges[side])]) - config_.occlusion_margin) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void ReflectorExtractor::process_cluster_paper(const LaserScan& scan, const BeamCluster& cluster) {
+  if (cluster.num_selected < std::max(config_.min_beams, 3)) {
+    ++stats_.rejected_too_few_beams;
+    return;
+  }
+  gather_beams(scan, cluster);
+  CircleFit fit;
+  if (!fit_circle_algebraic(beams_, config_.clustering.range_sigma, fit)) {
+    ++stats_.rejected_fit_failed;
+    return;
+  }
+  const double d_bar = paper_roundness_index(beams_, fit.center, fit.radius, config_.paper_drop_points);
+  if (d_bar < 0.0) {
+    ++stats_.rejected_too_few_beams;
+    return;
+  }
+  if (!config_.paper_roundness.accepts(d_bar, fit.center.norm())) {
+    ++stats_.rejected_not_round;
+    return;
+  }
+  emit(scan, cluster, fit, d_bar, fit.radius);
+}
+
+void ReflectorExtractor::process_cluster_default(const LaserScan& scan, const BeamCluster& cluster) {
+  if (cluster.num_selected < config_.min_beams) {
+    ++stats_.rejected_too_few_beams;
+    return;
+  }
+  if (occluded(scan, cluster)) {
+    ++stats_.rejected_occluded;
+    return;
+  }
+  gather_beams(scan, cluster);
+  // Partial hits at the edges: drop at most one beam a side, never below min_beams.
+  const double brightest = *std::max_element(beam_rssi_.begin(), beam_rssi_.end());
+  const double edge_floor = config_.edge_rssi_ratio * brightest;
+  if (static_cast<int>(beams_.size()) > config_.min_beams && beam_rssi_.back() < edge_floor) {
+    beams_.pop_back();
+    beam_rssi_.pop_back();
+  }
+  if (static_cast<int>(beams_.size()) > config_.min_beams && beam_rssi_.front() < edge_floor) {
+    beams_.erase(beams_.begin());
+    beam_rssi_.erase(beam_rssi_.begin());
+  }
+  CircleFit fit;
+  if (!fit_circle_known_radius(beams_, config_.reflector_radius, config_.fit, fit)) {
+    ++stats_.rejected_fit_failed;
+    return;
+  }
+  CircleFit free_fit;
+  const bool have_free = static_cast<int>(beams_.size()) >= config_.roundness.min_beams_for_radius_check &&
+                         fit_circle_free_radius(beams_, fit.center, fit.radius, config_.fit, free_fit);
+  switch (check_known_radius_roundness(beams_, fit, have_free ? &free_fit : nullptr, config_.roundness)) {
+    case RoundnessVerdict::kRound:
+      break;
+    case RoundnessVerdict::kTooWide:
+      ++stats_.rejected_too_wide;
+      return;
+    case RoundnessVerdict::kResidual:
+      ++stats_.rejected_not_round;
+      return;
+    case RoundnessVerdict::kRadiusMismatch:
+      ++stats_.rejected_radius;
+      return;
+  }
+  const double range = fit.center.norm();
+  if (config_.angle_sigma > 0.0 && range > 0.0) {
+    const Eigen::Vector2d across(-fit.center.y() / range, fit.center.x() / range);
+    const double sigma = config_.angle_sigma * range;
+    fit.covariance += sigma * sigma * across * across.transpose();
+  }
+  emit(scan, cluster, fit, mean_abs_range_residual(beams_, fit, config_.fit.min_incidence_cos),
+       have_free ? free_fit.radius : fit.radius);
+}
+
+void ReflectorExtractor::emit(const LaserScan& scan, const BeamCluster& cluster, const CircleFit& fit,
+                              double roundness, double fitted_radius) {
+  ReflectorDetection d;
+  d.laser_p_center = fit.center;
+  d.covariance = fit.covariance;
+  d.range = fit.center.norm();
+  d.bearing = std::atan2(fit.center.y(), fit.center.x());
+  d.utime = scan.beam_utime(static_cast<size_t>((cluster.first + cluster.last) / 2));
+  d.first_beam = cluster.first;
+  d.num_beams = cluster.num_selected;
+  double rssi_sum = 0.0;
+  for (int i = cluster.first; i <= cluster.last; ++i) {
+    if (high_energy_[static_cast<size_t>(i)] != 0) rssi_sum += rssi_8bit(scan, static_cast<size_t>(i));
+  }
+  d.mean_rssi = rssi_sum / static_cast<double>(std::max(cluster.num_selected, 1));
+  d.roundness_m = roundness;
+  d.fitted_radius_m = fitted_radius;
+  detections_.push_back(d);
+}
+
+}  // namespace refloc

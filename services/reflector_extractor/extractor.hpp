@@ -1,0 +1,95 @@
+#pragma once
+// ReflectorExtractor: one LaserScan in, the retro-reflector cylinders it sees out
+// (centres in the laser frame with covariance). Composes energy screening, adaptive
+// breakpoint clustering, a circle fit and a roundness test, in one of two modes:
+//  - kPaper:   the paper's §3.2-3.4 as written (algebraic fit, d-bar under a line);
+//  - kDefault: known-radius Gauss-Newton fit with covariance and a stricter roundness test.
+
+#include "common/laser_scan.hpp"
+#include "common/reflector_detection.hpp"
+#include "reflector_extractor/adaptive_breakpoint.hpp"
+#include "reflector_extractor/circle_fit.hpp"
+#include "reflector_extractor/roundness.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace refloc {
+
+struct ExtractorConfig {
+  enum class Mode { kDefault, kPaper };
+  Mode mode = Mode::kDefault;
+
+  double energy_threshold_8bit = 180.0;  ///< paper §3.2 [RSSI on the 8-bit scale]
+  AdaptiveBreakpointConfig clustering;   ///< lambda 10 deg, sigma_r 0.012 m (also the fit's range noise)
+  double reflector_radius = 0.06;        ///< known cylinder radius [m]
+  int min_beams = 2;                     ///< smaller clusters are not reflectors
+
+  // Paper mode (§3.3-3.4).
+  int paper_drop_points = 1;  ///< first and last n points left out of d-bar
+  RoundnessLine paper_roundness;
+
+  // Default mode.
+  KnownRadiusFitConfig fit;
+  KnownRadiusRoundnessConfig roundness;
+  /// Bearing noise of a beam [rad]: adds (range * angle_sigma)^2 across the line of sight.
+  double angle_sigma = 2e-4;
+  /// An edge beam whose RSSI is below this fraction of the cluster's brightest is a partial
+  /// hit (beam straddling the reflector's edge, mixed range): dropped from the fit.
+  double edge_rssi_ratio = 0.8;
+  /// A neighbour beam closer than the cluster's edge by this much hides part of the
+  /// reflector, which would bias the centre sideways [m].
+  double occlusion_margin = 0.1;
+  bool reject_occluded = true;
+  /// A dazzled neighbour (sensor code 1) may be the rest of the reflector.
+  bool reject_next_to_dazzled = true;
+
+  /// The paper's method with the paper's parameters.
+  static ExtractorConfig paper();
+};
+
+/// Counts of one scan's clusters by fate.
+struct ExtractionStats {
+  int clusters_considered = 0;  ///< high-energy clusters
+  int rejected_too_few_beams = 0;
+  int rejected_too_wide = 0;
+  int rejected_not_round = 0;   ///< residual or d-bar test
+  int rejected_radius = 0;      ///< free-fit radius far from the known radius
+  int rejected_occluded = 0;    ///< occluded or next to a dazzled beam
+  int rejected_fit_failed = 0;
+  int rejected() const {
+    return rejected_too_few_beams + rejected_too_wide + rejected_not_round + rejected_radius +
+           rejected_occluded + rejected_fit_failed;
+  }
+};
+
+class ReflectorExtractor {
+ public:
+  explicit ReflectorExtractor(ExtractorConfig config = {});
+
+  /// Detections in scan, in beam order; the reference stays valid until the next call.
+  /// No allocation once the internal buffers have grown to the largest scan seen.
+  const std::vector<ReflectorDetection>& extract(const LaserScan& scan);
+
+  const ExtractionStats& stats() const { return stats_; }
+  const ExtractorConfig& config() const { return config_; }
+
+ private:
+  void gather_beams(const LaserScan& scan, const BeamCluster& cluster);
+  bool occluded(const LaserScan& scan, const BeamCluster& cluster) const;
+  void process_cluster_paper(const LaserScan& scan, const BeamCluster& cluster);
+  void process_cluster_default(const LaserScan& scan, const BeamCluster& cluster);
+  void emit(const LaserScan& scan, const BeamCluster& cluster, const CircleFit& fit, double roundness,
+            double fitted_radius);
+
+  ExtractorConfig config_;
+  AdaptiveBreakpointClusterer clusterer_;
+  ExtractionStats stats_;
+  std::vector<uint8_t> high_energy_;
+  std::vector<BeamCluster> clusters_;
+  std::vector<FitBeam> beams_;
+  std::vector<double> beam_rssi_;
+  std::vector<ReflectorDetection> detections_;
+};
+
+}  // namespace refloc

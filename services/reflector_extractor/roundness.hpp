@@ -1,0 +1,49 @@
+#pragma once
+// Roundness tests (paper §3.2 step 3, §3.3-3.4): is a bright cluster a cylinder, or a
+// strip of tape, a metal plate, a safety vest?
+
+#include "reflector_extractor/circle_fit.hpp"
+
+#include <vector>
+
+namespace refloc {
+
+/// The paper's roundness index d-bar: mean |distance(point, center) - radius| over the
+/// beams after dropping the first and last drop_points (edge beams are partial hits) [m].
+/// Negative when fewer than one beam would remain.
+double paper_roundness_index(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center,
+                             double radius, int drop_points);
+
+/// The paper's acceptance line d-bar <= offset + slope * range (the fitted line raised by
+/// 30 mm in §3.4).
+struct RoundnessLine {
+  double offset = 0.0335;  ///< [m]; see tools/refloc-calibrate-roundness
+  double slope = 0.0006;   ///< [m per m of range]
+  bool accepts(double d_bar, double range) const { return d_bar <= offset + slope * range; }
+};
+
+/// Why a cluster is not taken for a cylinder of the known radius.
+enum class RoundnessVerdict { kRound, kTooWide, kResidual, kRadiusMismatch };
+
+struct KnownRadiusRoundnessConfig {
+  /// Allowed distance between the cluster's outer points beyond the diameter [m]; about
+  /// 3 sigma_r * sqrt(2) so range noise alone never rejects a cylinder.
+  double chord_margin = 0.05;
+  /// Largest RMS of the normalised range residuals (chi2 / (n - 2))^0.5 of the known-radius fit.
+  double max_rms_residual_sigmas = 2.5;
+  /// The free-radius fit must agree with the known radius within max(radius_tolerance,
+  /// radius_sigmas * its own standard deviation).
+  double radius_tolerance = 0.03;  ///< [m]
+  double radius_sigmas = 3.0;
+  int min_beams_for_radius_check = 5;  ///< fewer beams say nothing useful about curvature
+};
+
+/// Verdict for beams whose known-radius fit is known_fit; free_fit may be null (too few
+/// beams or the free fit failed).
+RoundnessVerdict check_known_radius_roundness(const std::vector<FitBeam>& beams, const CircleFit& known_fit,
+                                              const CircleFit* free_fit, const KnownRadiusRoundnessConfig& config);
+
+/// Mean |range residual| of the beams against a fitted circle [m].
+double mean_abs_range_residual(const std::vector<FitBeam>& beams, const CircleFit& fit, double min_incidence_cos);
+
+}  // namespace refloc
