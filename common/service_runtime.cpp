@@ -132,7 +132,8 @@ void ServiceRuntime::publish_heartbeat() {
     hb.counter_values.push_back(value);
   }
   hb.ncounters = static_cast<int32_t>(hb.counter_names.size());
-  publish("HEARTBEAT", hb);
+  // Not through publish(): messages_out counts the service's data, not its heartbeats.
+  lcm_->publish("HEARTBEAT", &hb);
 }
 
 }  // namespace refloc
