@@ -1,0 +1,120 @@
+#include "reflector_matcher/global_relocalizer.hpp"
+
+#include "reflector_matcher/rigid_fit_2d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace refloc {
+namespace {
+
+constexpr std::array<std::array<int, 3>, 6> kPermutations = {
+    {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+
+}  // namespace
+
+GlobalRelocalizer::GlobalRelocalizer(const ReflectorMap& map, const MapGrid& grid, const MapTriangleIndex& index,
+                                     const MatcherConfig& config)
+    : map_(map), config_(config), index_(index), verifier_(map, grid, config) {}
+
+void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection>& detections) {
+  hypotheses_.clear();
+  nearest_.clear();
+  for (size_t i = 0; i < detections.size(); ++i) nearest_.push_back(static_cast<int>(i));
+  // Near detections are the most accurate and the most likely to be real reflectors.
+  std::sort(nearest_.begin(), nearest_.end(), [&](int a, int b) {
+    return detections[static_cast<size_t>(a)].laser_p_center.squaredNorm() <
+           detections[static_cast<size_t>(b)].laser_p_center.squaredNorm();
+  });
+  if (static_cast<int>(nearest_.size()) > config_.max_triple_detections) {
+    nearest_.resize(static_cast<size_t>(config_.max_triple_detections));
+  }
+  const double tol = config_.triangle_side_tolerance;
+  const double max_err2 = config_.hypothesis_fit_max_error * config_.hypothesis_fit_max_error;
+  const size_t n = nearest_.size();
+  for (size_t i = 0; i < n; ++i) {
+    for (size_t j = i + 1; j < n; ++j) {
+      for (size_t k = j + 1; k < n; ++k) {
+        const std::array<int, 3> det = {nearest_[i], nearest_[j], nearest_[k]};
+        const std::array<Eigen::Vector2d, 3> laser_p = {detections[static_cast<size_t>(det[0])].laser_p_center,
+                                                        detections[static_cast<size_t>(det[1])].laser_p_center,
+                                                        detections[static_cast<size_t>(det[2])].laser_p_center};
+        const SortedSides s = sorted_sides(laser_p);
+        if (s.side[0] < config_.min_triangle_side - tol) continue;
+        index_.for_each_candidate(s.side, [&](const IndexedTriangle& tri) {
+          // Sorted order fixes the correspondence unless sides are nearly equal (isosceles):
+          // try every vertex assignment whose sides agree, and let the rigid fit decide
+          // (a mirrored assignment cannot fit a rotation).
+          for (const auto& perm : kPermutations) {
+            bool sides_agree = true;
+            for (int m = 0; m < 3 && sides_agree; ++m) {
+              sides_agree = std::abs(s.side[static_cast<size_t>(m)] - tri.side[static_cast<size_t>(perm[static_cast<size_t>(m)])]) <= tol;
+            }
+            if (!sides_agree) continue;
+            RigidFit2d fit;
+            std::array<Eigen::Vector2d, 3> map_p;
+            for (size_t m = 0; m < 3; ++m) {
+              map_p[m] = map_.reflectors[static_cast<size_t>(tri.opposite[static_cast<size_t>(perm[m])])].map_p_center;
+              fit.add(laser_p[static_cast<size_t>(s.opposite[m])], map_p[m]);
+            }
+            Pose2 map_T_laser;
+            if (!fit.solve(map_T_laser)) continue;
+            bool fits = true;
+            for (size_t m = 0; m < 3 && fits; ++m) {
+              fits = (map_T_laser * laser_p[static_cast<size_t>(s.opposite[m])] - map_p[m]).squaredNorm() <= max_err2;
+            }
+            if (fits && static_cast<int>(hypotheses_.size()) < config_.max_hypotheses) hypotheses_.push_back(map_T_laser);
+          }
+        });
+      }
+    }
+  }
+}
+
+void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detections, MatchResult& result) {
+  result.mode = MatchMode::kGlobal;
+  result.status = MatchStatus::kLost;
+  result.matches.clear();
+  result.hypothesis_score = 0.0;
+  result.runner_up_score = 0.0;
+  result.ndetections = static_cast<int>(detections.size());
+  scored_.clear();
+  best_associations_.clear();
+  if (static_cast<int>(detections.size()) < config_.min_matches) return;
+
+  generate_hypotheses(detections);
+  double best_score = -1e300;
+  int best_matched = 0;
+  Pose2 best_pose;
+  for (const Pose2& h : hypotheses_) {
+    const Verification v = verifier_.verify(h, detections);
+    scored_.push_back({v.map_T_laser, v.score});
+    if (v.score > best_score) {
+      best_score = v.score;
+      best_matched = v.matched;
+      best_pose = v.map_T_laser;
+      best_associations_ = verifier_.associations();
+    }
+  }
+  if (scored_.empty()) return;
+
+  double runner_up = -1e300;
+  for (const Scored& s : scored_) {
+    if (!approx_equal(s.map_T_laser, best_pose, config_.distinct_pose_distance, config_.distinct_pose_angle)) {
+      runner_up = std::max(runner_up, s.score);
+    }
+  }
+  result.map_T_laser = best_pose;
+  result.hypothesis_score = best_score;
+  result.runner_up_score = scored_.size() > 1 && runner_up > -1e300 ? runner_up : 0.0;
+  if (best_matched < config_.min_matches || best_score <= 0.0) return;
+  for (const Association& a : best_associations_) {
+    const MapReflector& r = map_.reflectors[static_cast<size_t>(a.map_index)];
+    result.matches.push_back({a.detection_index, r.id, r.map_p_center, r.radius});
+  }
+  const bool ambiguous = runner_up > -1e300 && runner_up >= config_.ambiguity_ratio * best_score;
+  result.status = ambiguous ? MatchStatus::kAmbiguous : MatchStatus::kOk;
+}
+
+}  // namespace refloc

@@ -1,0 +1,50 @@
+#pragma once
+// Relocalization without a prior: every triangle of detections looks up the map
+// triangles with the same sorted sides, each gives a map_T_laser hypothesis by a
+// rigid fit, each hypothesis is verified against the whole map, the best wins,
+// and a substantially different runner-up that explains the scan nearly as well
+// makes the answer AMBIGUOUS rather than a coin toss.
+
+#include "reflector_matcher/hypothesis_verifier.hpp"
+#include "reflector_matcher/map_grid.hpp"
+#include "reflector_matcher/map_triangle_index.hpp"
+#include "reflector_matcher/match_result.hpp"
+#include "reflector_matcher/matcher_config.hpp"
+
+#include "common/reflector_detection.hpp"
+#include "common/reflector_map.hpp"
+
+#include <vector>
+
+namespace refloc {
+
+class GlobalRelocalizer {
+ public:
+  /// map, grid, index and config must outlive the relocalizer.
+  GlobalRelocalizer(const ReflectorMap& map, const MapGrid& grid, const MapTriangleIndex& index,
+                    const MatcherConfig& config);
+
+  /// Fills result (status, matches, scores, map_T_laser; mode = GLOBAL).
+  void relocalize(const std::vector<ReflectorDetection>& detections, MatchResult& result);
+
+  /// Hypotheses verified by the last call (for tests and benchmarks).
+  size_t hypotheses_verified() const { return scored_.size(); }
+
+ private:
+  struct Scored {
+    Pose2 map_T_laser;
+    double score;
+  };
+  void generate_hypotheses(const std::vector<ReflectorDetection>& detections);
+
+  const ReflectorMap& map_;
+  const MatcherConfig& config_;
+  const MapTriangleIndex& index_;
+  HypothesisVerifier verifier_;
+  std::vector<int> nearest_;  ///< detection indices used for triples, nearest first
+  std::vector<Pose2> hypotheses_;
+  std::vector<Scored> scored_;
+  std::vector<Association> best_associations_;
+};
+
+}  // namespace refloc

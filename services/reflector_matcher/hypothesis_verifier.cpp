@@ -1,0 +1,62 @@
+#include "reflector_matcher/hypothesis_verifier.hpp"
+
+#include "reflector_matcher/rigid_fit_2d.hpp"
+
+#include <algorithm>
+
+namespace refloc {
+
+HypothesisVerifier::HypothesisVerifier(const ReflectorMap& map, const MapGrid& grid, const MatcherConfig& config)
+    : map_(map), grid_(grid), config_(config) {}
+
+int HypothesisVerifier::associate(const Pose2& map_T_laser, const std::vector<ReflectorDetection>& detections,
+                                  double gate) {
+  predict_reflectors(map_, grid_, map_T_laser, config_, gate, scratch_, predicted_);
+  const double gate2 = gate * gate;
+  candidates_.clear();
+  for (size_t k = 0; k < predicted_.size(); ++k) {
+    for (size_t d = 0; d < detections.size(); ++d) {
+      const double d2 = (detections[d].laser_p_center - predicted_[k].laser_p).squaredNorm();
+      if (d2 <= gate2) candidates_.push_back({d2, static_cast<int>(k), static_cast<int>(d)});
+    }
+  }
+  std::sort(candidates_.begin(), candidates_.end(),
+            [](const Candidate& a, const Candidate& b) { return a.distance2 < b.distance2; });
+  predicted_matched_.assign(predicted_.size(), 0);
+  detection_used_.assign(detections.size(), 0);
+  associations_.clear();
+  for (const Candidate& c : candidates_) {
+    if (predicted_matched_[static_cast<size_t>(c.predicted_index)] || detection_used_[static_cast<size_t>(c.detection_index)]) continue;
+    predicted_matched_[static_cast<size_t>(c.predicted_index)] = 1;
+    detection_used_[static_cast<size_t>(c.detection_index)] = 1;
+    associations_.push_back({c.detection_index, predicted_[static_cast<size_t>(c.predicted_index)].map_index});
+  }
+  return static_cast<int>(associations_.size());
+}
+
+bool HypothesisVerifier::refit(const std::vector<ReflectorDetection>& detections, Pose2& map_T_laser) const {
+  RigidFit2d fit;
+  for (const Association& a : associations_) {
+    fit.add(detections[static_cast<size_t>(a.detection_index)].laser_p_center,
+            map_.reflectors[static_cast<size_t>(a.map_index)].map_p_center);
+  }
+  return fit.count() >= 3 && fit.solve(map_T_laser);
+}
+
+Verification HypothesisVerifier::verify(const Pose2& map_T_laser, const std::vector<ReflectorDetection>& detections) {
+  Verification v;
+  v.map_T_laser = map_T_laser;
+  if (associate(map_T_laser, detections, config_.verify_coarse_gate) >= 3) refit(detections, v.map_T_laser);
+  v.matched = associate(v.map_T_laser, detections, config_.verify_fine_gate);
+  for (size_t k = 0; k < predicted_.size(); ++k) {
+    if (predicted_[k].in_view && !predicted_matched_[k] && !is_shadowed(map_, predicted_, k)) ++v.missed;
+  }
+  v.unexplained = static_cast<int>(detections.size()) - v.matched;
+  v.score = v.matched - config_.missed_penalty * v.missed - config_.unexplained_penalty * v.unexplained;
+  // The reported pose uses every fine association; the associations themselves stay as scored.
+  Pose2 refined = v.map_T_laser;
+  if (refit(detections, refined)) v.map_T_laser = refined;
+  return v;
+}
+
+}  // namespace refloc

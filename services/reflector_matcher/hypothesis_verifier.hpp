@@ -1,0 +1,65 @@
+#pragma once
+// Scores a map_T_laser hypothesis against the whole scan: every map reflector
+// predicted in view is looked for among the detections, so a pose that
+// explains three detections by chance but predicts reflectors nobody saw loses.
+
+#include "reflector_matcher/map_grid.hpp"
+#include "reflector_matcher/matcher_config.hpp"
+#include "reflector_matcher/reflector_visibility.hpp"
+
+#include "common/reflector_detection.hpp"
+#include "common/reflector_map.hpp"
+#include "common/se2.hpp"
+
+#include <vector>
+
+namespace refloc {
+
+/// One detection explained by one map reflector (indices, not ids).
+struct Association {
+  int detection_index = -1;
+  int map_index = -1;
+};
+
+struct Verification {
+  Pose2 map_T_laser;    ///< the hypothesis refitted to all its associations
+  double score = 0.0;   ///< matched - missed_penalty * missed - unexplained_penalty * unexplained
+  int matched = 0;      ///< detections explained
+  int missed = 0;       ///< reflectors expected in view, not shadowed, not seen
+  int unexplained = 0;  ///< detections no reflector explains
+};
+
+class HypothesisVerifier {
+ public:
+  /// map, grid and config must outlive the verifier.
+  HypothesisVerifier(const ReflectorMap& map, const MapGrid& grid, const MatcherConfig& config);
+
+  /// Associate with the coarse gate, refit, associate with the fine gate, score.
+  Verification verify(const Pose2& map_T_laser, const std::vector<ReflectorDetection>& detections);
+
+  /// Associations of the last verify() (fine gate).
+  const std::vector<Association>& associations() const { return associations_; }
+
+  /// Unique nearest-neighbour association within gate [m]; returns the number of associations.
+  int associate(const Pose2& map_T_laser, const std::vector<ReflectorDetection>& detections, double gate);
+
+ private:
+  struct Candidate {
+    double distance2;
+    int predicted_index;
+    int detection_index;
+  };
+  bool refit(const std::vector<ReflectorDetection>& detections, Pose2& map_T_laser) const;
+
+  const ReflectorMap& map_;
+  const MapGrid& grid_;
+  const MatcherConfig& config_;
+  std::vector<int> scratch_;
+  std::vector<PredictedReflector> predicted_;
+  std::vector<char> predicted_matched_;
+  std::vector<char> detection_used_;
+  std::vector<Candidate> candidates_;
+  std::vector<Association> associations_;
+};
+
+}  // namespace refloc

@@ -1,0 +1,48 @@
+#pragma once
+// The matcher pipeline: paper mode (§3.5 triangle signatures), or the default
+// mode - tracking association from a prior pose, falling back to global
+// relocalization over an index of map triangles when there is no prior or
+// tracking fails.
+
+#include "reflector_matcher/global_relocalizer.hpp"
+#include "reflector_matcher/map_grid.hpp"
+#include "reflector_matcher/map_triangle_index.hpp"
+#include "reflector_matcher/match_result.hpp"
+#include "reflector_matcher/matcher_config.hpp"
+#include "reflector_matcher/paper_triangle_matcher.hpp"
+#include "reflector_matcher/tracking_associator.hpp"
+
+#include "common/reflector_detection.hpp"
+#include "common/reflector_map.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace refloc {
+
+class ReflectorMatcher {
+ public:
+  /// Builds the map's spatial grid and triangle index (or the paper's signature list) once.
+  ReflectorMatcher(ReflectorMap map, const MatcherConfig& config);
+  ReflectorMatcher(const ReflectorMatcher&) = delete;
+  ReflectorMatcher& operator=(const ReflectorMatcher&) = delete;
+
+  /// Match one scan's detections; prior may be null. result is overwritten (its vector reused).
+  void match(const std::vector<ReflectorDetection>& detections, const PosePrior* prior, MatchResult& result);
+
+  const ReflectorMap& map() const { return map_; }
+  const MatcherConfig& config() const { return config_; }
+  /// Triangles in the relocalization index (or the paper's list).
+  size_t indexed_triangles() const;
+
+ private:
+  ReflectorMap map_;
+  MatcherConfig config_;
+  MapGrid grid_;
+  std::unique_ptr<MapTriangleIndex> index_;
+  std::unique_ptr<GlobalRelocalizer> relocalizer_;
+  std::unique_ptr<TrackingAssociator> tracker_;
+  std::unique_ptr<PaperTriangleMatcher> paper_;
+};
+
+}  // namespace refloc

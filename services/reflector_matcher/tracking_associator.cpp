@@ -1,0 +1,92 @@
+#include "reflector_matcher/tracking_associator.hpp"
+
+#include "reflector_matcher/rigid_fit_2d.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+
+namespace refloc {
+
+TrackingAssociator::TrackingAssociator(const ReflectorMap& map, const MapGrid& grid, const MatcherConfig& config)
+    : map_(map), grid_(grid), config_(config), refit_verifier_(map, grid, config) {}
+
+bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detections, const PosePrior& prior,
+                                   MatchResult& result) {
+  result.mode = MatchMode::kTracking;
+  result.status = MatchStatus::kLost;
+  result.matches.clear();
+  result.hypothesis_score = 0.0;
+  result.runner_up_score = 0.0;
+  result.map_T_laser = prior.map_T_laser;
+  result.ndetections = static_cast<int>(detections.size());
+
+  Eigen::Matrix3d prior_cov = prior.covariance;
+  const double min_var_xy = config_.prior_min_sigma_xy * config_.prior_min_sigma_xy;
+  const double min_var_theta = config_.prior_min_sigma_theta * config_.prior_min_sigma_theta;
+  prior_cov(0, 0) = std::max(prior_cov(0, 0), min_var_xy);
+  prior_cov(1, 1) = std::max(prior_cov(1, 1), min_var_xy);
+  prior_cov(2, 2) = std::max(prior_cov(2, 2), min_var_theta);
+
+  // The prior's 3-sigma position error widens the search beyond the nominal view.
+  const double margin = 3.0 * std::sqrt(std::max(prior_cov(0, 0), prior_cov(1, 1))) +
+                        3.0 * std::sqrt(prior_cov(2, 2)) * config_.max_range;
+  predict_reflectors(map_, grid_, prior.map_T_laser, config_, margin, scratch_, predicted_);
+
+  const double c = std::cos(prior.map_T_laser.theta), s = std::sin(prior.map_T_laser.theta);
+  Eigen::Matrix2d laser_R_map_derivative;  // d(R^T)/d theta
+  laser_R_map_derivative << -s, c, -c, -s;
+  Eigen::Matrix2d laser_R_map;
+  laser_R_map << c, s, -s, c;
+  const double min_det_var = config_.detection_min_sigma * config_.detection_min_sigma;
+
+  candidates_.clear();
+  for (size_t k = 0; k < predicted_.size(); ++k) {
+    const Eigen::Vector2d map_p = map_.reflectors[static_cast<size_t>(predicted_[k].map_index)].map_p_center;
+    // laser_p = R^T (map_p - t): Jacobian w.r.t. (x, y, theta) of map_T_laser.
+    Eigen::Matrix<double, 2, 3> j;
+    j.leftCols<2>() = -laser_R_map;
+    j.col(2) = laser_R_map_derivative * (map_p - prior.map_T_laser.translation());
+    const Eigen::Matrix2d prior_part = j * prior_cov * j.transpose();
+    for (size_t d = 0; d < detections.size(); ++d) {
+      Eigen::Matrix2d cov = prior_part + detections[d].covariance;
+      cov(0, 0) += min_det_var;
+      cov(1, 1) += min_det_var;
+      const Eigen::Vector2d e = detections[d].laser_p_center - predicted_[k].laser_p;
+      const double m2 = e.dot(cov.inverse() * e);
+      if (m2 <= config_.tracking_gate_chi2) candidates_.push_back({m2, static_cast<int>(k), static_cast<int>(d)});
+    }
+  }
+  std::sort(candidates_.begin(), candidates_.end(),
+            [](const Candidate& a, const Candidate& b) { return a.mahalanobis2 < b.mahalanobis2; });
+  predicted_used_.assign(predicted_.size(), 0);
+  detection_used_.assign(detections.size(), 0);
+  RigidFit2d fit;
+  for (const Candidate& cand : candidates_) {
+    const auto k = static_cast<size_t>(cand.predicted_index), d = static_cast<size_t>(cand.detection_index);
+    if (predicted_used_[k] || detection_used_[d]) continue;
+    predicted_used_[k] = detection_used_[d] = 1;
+    fit.add(detections[d].laser_p_center, map_.reflectors[static_cast<size_t>(predicted_[k].map_index)].map_p_center);
+  }
+  if (fit.count() < config_.min_matches) return false;
+  Pose2 refined;
+  if (!fit.solve(refined)) return false;
+
+  // Second pass with the refitted pose: a tight Euclidean gate, and the whole-scan score.
+  const int matched = refit_verifier_.associate(refined, detections, config_.tracking_refit_gate);
+  if (matched < config_.min_matches) return false;
+  RigidFit2d final_fit;
+  for (const Association& a : refit_verifier_.associations()) {
+    const MapReflector& r = map_.reflectors[static_cast<size_t>(a.map_index)];
+    result.matches.push_back({a.detection_index, r.id, r.map_p_center, r.radius});
+    final_fit.add(detections[static_cast<size_t>(a.detection_index)].laser_p_center, r.map_p_center);
+  }
+  final_fit.solve(result.map_T_laser);
+  result.hypothesis_score = matched;
+  result.status = MatchStatus::kOk;
+  return true;
+}
+
+}  // namespace refloc
