@@ -1,0 +1,350 @@
+#include "lms100_emulator/lms100_emulator.hpp"
+
+#include "common/clock.hpp"
+#include "lms100_driver/cola_a_splitter.hpp"
+#include "lms100_emulator/lmd_scandata_encoder.hpp"
+#include "lms100_emulator/tcp_socket.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <random>
+#include <stdexcept>
+
+namespace refloc {
+
+namespace {
+constexpr double kDegToRad = M_PI / 180.0;
+constexpr uint32_t kMeasurementFrequency100Hz = 360;  // 36 kHz beam rate on every LMS1xx
+constexpr double kTimeIncrementS = 1.0 / (kMeasurementFrequency100Hz * 100.0);
+constexpr int64_t kMaxWaitUs = 50000;  // re-check the fault knobs at least this often
+}  // namespace
+
+struct Lms100Emulator::Server {
+  Server(const Lms100EmulatorConfig& c, ScanSource& s, FaultInjector& f, int wake, std::atomic<bool>& stop_flag)
+      : config(c), source(s), faults(f), wake_fd(wake), stop(stop_flag), device(c.device),
+        telegram_counter(c.first_telegram_counter), rng(c.random_seed) {}
+
+  void run();
+  uint64_t device_now() const { return static_cast<uint64_t>(monotonic_us() - power_up_mono_us); }
+  void accept_new_client();
+  void read_client();
+  void handle_request(const std::string& request);
+  void emit_scan(const ScanSlot& slot, bool stream);
+  void send_frame(const std::string& body, bool is_scan);
+  void write_out(const std::string& bytes);
+  void flush_merged();
+  void disconnect();
+  void apply_faults(int64_t now_mono);
+
+  const Lms100EmulatorConfig& config;
+  ScanSource& source;
+  FaultInjector& faults;
+  int wake_fd;
+  std::atomic<bool>& stop;
+
+  Lms100Device device;
+  ColaASplitter splitter;
+  int listen_fd = -1;
+  int client_fd = -1;
+  int64_t power_up_mono_us = 0;
+  int64_t power_up_utime = 0;
+  uint16_t telegram_counter;
+  bool stream_was_enabled = false;
+  int stream_telegrams = 0;
+  std::mt19937 rng;
+  FaultSettings settings;
+  int64_t stalled_until_mono = 0;
+  int merged_count = 0;
+
+  std::string request, reply, body, framed, merge_buffer, stall_buffer;
+  std::vector<uint16_t> dist_mm, rssi;
+  std::vector<size_t> cuts;
+
+  std::mutex stats_mutex;
+  Lms100EmulatorStats stats;
+};
+
+void Lms100Emulator::Server::run() {
+  pollfd fds[3];
+  while (!stop.load()) {
+    const int64_t now_mono = monotonic_us();
+    apply_faults(now_mono);
+    const uint64_t complete_delay = static_cast<uint64_t>(
+        (device.full_scan_beams() * kTimeIncrementS + config.processing_delay_s) * 1e6);
+    ScanSlot slot;
+    while (device.scheduler().pop_due_scan(device_now(), complete_delay, slot)) emit_scan(slot, true);
+
+    int64_t wait_us = kMaxWaitUs;
+    const uint64_t now_dev = device_now();
+    const uint64_t next = device.scheduler().next_event_us(now_dev, complete_delay);
+    if (next != std::numeric_limits<uint64_t>::max()) {
+      wait_us = std::min<int64_t>(wait_us, next > now_dev ? static_cast<int64_t>(next - now_dev) : 0);
+    }
+    if (stalled_until_mono > 0) wait_us = std::min(wait_us, std::max<int64_t>(0, stalled_until_mono - monotonic_us()));
+
+    fds[0] = {wake_fd, POLLIN, 0};
+    fds[1] = {listen_fd, POLLIN, 0};
+    fds[2] = {client_fd, POLLIN, 0};  // poll ignores negative fds
+    const timespec timeout{static_cast<time_t>(wait_us / 1000000), static_cast<long>((wait_us % 1000000) * 1000)};
+    if (::ppoll(fds, 3, &timeout, nullptr) <= 0) continue;
+    if (fds[0].revents & POLLIN) {
+      char drain[64];
+      while (::read(wake_fd, drain, sizeof(drain)) > 0) {
+      }
+    }
+    if (fds[1].revents & POLLIN) accept_new_client();
+    if (client_fd >= 0 && (fds[2].revents & (POLLIN | POLLHUP | POLLERR))) read_client();
+  }
+  disconnect();
+  close_socket(listen_fd);
+}
+
+void Lms100Emulator::Server::apply_faults(int64_t now_mono) {
+  settings = faults.settings();
+  device.set_refuse_readiness(settings.refuse_readiness);
+  if (faults.take_refuse_next_write()) device.arm_refuse_next_write();
+  if (faults.take_close_now()) disconnect();
+  const int stall_ms = faults.take_stall_ms();
+  if (stall_ms > 0) stalled_until_mono = std::max(stalled_until_mono, now_mono + int64_t{stall_ms} * 1000);
+  if (stalled_until_mono > 0 && now_mono >= stalled_until_mono) {
+    stalled_until_mono = 0;
+    if (client_fd >= 0 && !stall_buffer.empty()) {
+      std::string burst;
+      burst.swap(stall_buffer);
+      write_out(burst);
+    }
+    stall_buffer.clear();
+  }
+}
+
+void Lms100Emulator::Server::accept_new_client() {
+  const int fd = accept_client(listen_fd);
+  if (fd < 0) return;
+  disconnect();  // the new client replaces the old one
+  client_fd = fd;
+  configure_client_socket(client_fd, config.send_timeout_ms);
+  splitter.reset();
+  std::lock_guard<std::mutex> lock(stats_mutex);
+  ++stats.clients_accepted;
+}
+
+void Lms100Emulator::Server::disconnect() {
+  if (client_fd < 0) return;
+  close_socket(client_fd);
+  device.on_client_disconnected();
+  stream_was_enabled = false;
+  merge_buffer.clear();
+  merged_count = 0;
+  stall_buffer.clear();
+  std::lock_guard<std::mutex> lock(stats_mutex);
+  ++stats.disconnects;
+}
+
+void Lms100Emulator::Server::read_client() {
+  uint8_t buffer[4096];
+  const ssize_t n = ::recv(client_fd, buffer, sizeof(buffer), MSG_DONTWAIT);
+  if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) {
+    disconnect();
+    return;
+  }
+  if (n < 0) return;
+  splitter.feed(buffer, static_cast<size_t>(n));
+  while (client_fd >= 0 && splitter.next(request)) handle_request(request);
+}
+
+void Lms100Emulator::Server::handle_request(const std::string& payload) {
+  {
+    std::lock_guard<std::mutex> lock(stats_mutex);
+    ++stats.requests;
+  }
+  const Lms100Device::Action action = device.handle_request(payload, device_now(), reply);
+  if (device.stream_enabled() && !stream_was_enabled) stream_telegrams = 0;
+  stream_was_enabled = device.stream_enabled();
+  if (action == Lms100Device::Action::reply_with_scan) {
+    ScanSlot slot;
+    if (!device.scheduler().last_scan(slot)) {
+      // Nothing measured yet: the device still answers, with the current clock and counter.
+      slot.start_us = device_now();
+      slot.complete_us = slot.start_us;
+      slot.scan_counter = device.scheduler().next_scan_counter();
+    }
+    emit_scan(slot, false);
+    return;
+  }
+  send_frame(reply, false);
+  if (settings.duplicate_replies && client_fd >= 0) send_frame(reply, false);
+}
+
+void Lms100Emulator::Server::emit_scan(const ScanSlot& slot, bool stream) {
+  if (client_fd < 0) return;
+  const LmdDataConfig& data = device.data_config();
+  if (stream) {
+    if (!device.stream_enabled()) return;
+    if (data.output_interval > 1 && slot.scan_counter % data.output_interval != 0) return;
+    if (faults.take_drop()) {
+      std::lock_guard<std::mutex> lock(stats_mutex);
+      ++stats.scans_dropped;
+      return;
+    }
+  }
+  const OutputBeams beams = device.output_beams();
+  const auto first_beam_offset_us = static_cast<uint64_t>(std::llround(beams.first_index * kTimeIncrementS * 1e6));
+
+  ScanRequest scan;
+  scan.first_beam_sensor_us = slot.start_us + first_beam_offset_us;
+  scan.first_beam_utime = power_up_utime + static_cast<int64_t>(scan.first_beam_sensor_us);
+  scan.time_increment_s = kTimeIncrementS;
+  scan.num_beams = beams.count;
+  // Sensor angles run -45..225 deg with 90 deg straight ahead; the laser frame has 0 ahead.
+  scan.start_angle_rad = (beams.start_angle_1e4deg * 1e-4 - 90.0) * kDegToRad;
+  scan.angle_increment_rad = beams.step_1e4deg * 1e-4 * kDegToRad;
+  scan.scan_counter = slot.scan_counter;
+  scan.rssi_bits = data.rssi_enabled ? (data.rssi_16bit ? 16 : 8) : 0;
+  dist_mm.assign(static_cast<size_t>(beams.count), 0);
+  rssi.assign(static_cast<size_t>(beams.count), 0);
+  if (source) source(scan, dist_mm, rssi);
+
+  LmdTelegramHeader header;
+  header.is_stream_event = stream;
+  header.serial_number = device.config().serial_number;
+  header.device_status[0] = (stream && stream_telegrams < config.startup_status_scans) ? 1 : 0;
+  header.telegram_counter = telegram_counter;
+  header.scan_counter = slot.scan_counter;
+  header.time_since_startup_us = static_cast<uint32_t>(config.power_up_clock_us + scan.first_beam_sensor_us);
+  header.time_of_transmission_us = static_cast<uint32_t>(config.power_up_clock_us + slot.complete_us);
+  header.scan_frequency_1e2hz = device.scan_frequency_1e2hz();
+  header.measurement_frequency_100hz = kMeasurementFrequency100Hz;
+
+  LmdOutputOptions options;
+  options.rssi_bits = scan.rssi_bits;
+  options.send_device_name = data.device_name;
+  options.device_name = device.config().location_name;
+  options.send_comment = data.comment;
+  options.send_time_info = data.time_info;
+  options.time_info = calendar_time_from_epoch_us(
+      config.rtc_from_host_clock ? static_cast<uint64_t>(scan.first_beam_utime) : scan.first_beam_sensor_us);
+  LmdBeamLayout layout;
+  layout.start_angle_1e4deg = beams.start_angle_1e4deg;
+  layout.step_1e4deg = beams.step_1e4deg;
+  encode_lmd_scandata(header, layout, dist_mm.data(), rssi.data(), dist_mm.size(), options, body);
+
+  telegram_counter = static_cast<uint16_t>(telegram_counter + 1);
+  if (stream) {
+    ++stream_telegrams;
+    std::lock_guard<std::mutex> lock(stats_mutex);
+    ++stats.scan_telegrams_sent;
+  }
+  send_frame(body, stream);
+}
+
+void Lms100Emulator::Server::send_frame(const std::string& payload, bool is_scan) {
+  if (client_fd < 0) return;
+  framed.clear();
+  if (settings.junk_bytes_between_telegrams > 0) {
+    append_junk_bytes(static_cast<size_t>(settings.junk_bytes_between_telegrams), rng, framed);
+  }
+  framed.push_back('\x02');
+  framed.append(payload);
+  framed.push_back('\x03');
+
+  if (is_scan && faults.take_reset_mid_telegram()) {
+    flush_merged();
+    const std::string half = framed.substr(0, framed.size() / 2);
+    if (client_fd >= 0) send_all(client_fd, half.data(), half.size());
+    disconnect();
+    return;
+  }
+  if (is_scan && settings.merge_scan_telegrams > 1) {
+    merge_buffer += framed;
+    if (++merged_count >= settings.merge_scan_telegrams) flush_merged();
+    return;
+  }
+  flush_merged();  // keep the order: scans held for merging go before this frame
+  write_out(framed);
+}
+
+void Lms100Emulator::Server::flush_merged() {
+  if (merge_buffer.empty()) return;
+  std::string merged;
+  merged.swap(merge_buffer);
+  merged_count = 0;
+  write_out(merged);
+}
+
+void Lms100Emulator::Server::write_out(const std::string& bytes) {
+  if (client_fd < 0 || bytes.empty()) return;
+  if (stalled_until_mono > 0) {
+    stall_buffer += bytes;
+    return;
+  }
+  plan_write_cuts(bytes.size(), settings, rng, cuts);
+  size_t begin = 0;
+  cuts.push_back(bytes.size());
+  for (const size_t end : cuts) {
+    if (begin > 0 && settings.split_gap_ms > 0) ::usleep(static_cast<useconds_t>(settings.split_gap_ms) * 1000);
+    if (!send_all(client_fd, bytes.data() + begin, end - begin)) {
+      disconnect();
+      return;
+    }
+    begin = end;
+  }
+}
+
+Lms100Emulator::Lms100Emulator(const Lms100EmulatorConfig& config, ScanSource source)
+    : config_(config), source_(std::move(source)) {
+  faults_.set_settings(config.faults);
+}
+
+Lms100Emulator::~Lms100Emulator() { stop(); }
+
+void Lms100Emulator::start() {
+  if (thread_.joinable()) return;
+  if (::pipe2(wake_pipe_, O_NONBLOCK | O_CLOEXEC) != 0) throw std::runtime_error("pipe2() failed");
+  stop_requested_ = false;
+  server_ = std::make_unique<Server>(config_, source_, faults_, wake_pipe_[0], stop_requested_);
+  try {
+    server_->listen_fd = open_listening_socket(config_.bind_address, config_.port, bound_port_);
+  } catch (...) {
+    close_socket(wake_pipe_[0]);
+    close_socket(wake_pipe_[1]);
+    server_.reset();
+    throw;
+  }
+  server_->power_up_mono_us = monotonic_us();
+  server_->power_up_utime = now_utime();
+  power_up_utime_ = server_->power_up_utime;
+  if (config_.refuse_first_write_after_power_up) server_->device.arm_refuse_next_write();
+  const int wake_write_fd = wake_pipe_[1];
+  faults_.set_change_listener([wake_write_fd] {
+    const char byte = 1;
+    [[maybe_unused]] const ssize_t n = ::write(wake_write_fd, &byte, 1);
+  });
+  thread_ = std::thread([this] { server_->run(); });
+}
+
+void Lms100Emulator::stop() {
+  if (!thread_.joinable()) return;
+  stop_requested_ = true;
+  const char byte = 1;
+  [[maybe_unused]] const ssize_t n = ::write(wake_pipe_[1], &byte, 1);
+  thread_.join();
+  faults_.set_change_listener(nullptr);
+  close_socket(wake_pipe_[0]);
+  close_socket(wake_pipe_[1]);
+}
+
+Lms100EmulatorStats Lms100Emulator::stats() const {
+  if (!server_) return {};
+  std::lock_guard<std::mutex> lock(server_->stats_mutex);
+  return server_->stats;
+}
+
+}  // namespace refloc
