@@ -1,0 +1,145 @@
+#include "pose_fusion/pose_fusion.hpp"
+
+#include "mecanum_odometry/exact_arc.hpp"
+
+#include <algorithm>
+
+namespace refloc {
+
+const char* to_string(FusionStatus status) {
+  switch (status) {
+    case FusionStatus::kInitializing: return "INITIALIZING";
+    case FusionStatus::kOk: return "OK";
+    case FusionStatus::kDegraded: return "DEGRADED";
+    case FusionStatus::kLost: return "LOST";
+  }
+  return "?";
+}
+
+PoseFusion::PoseFusion(const FusionConfig& config) : config_(config) {}
+
+const PoseEstimate& PoseFusion::estimate() const { return posterior(static_cast<long>(steps_.size()) - 1); }
+
+int64_t PoseFusion::utime() const { return steps_.empty() ? base_utime_ : steps_.back().utime; }
+
+const PoseEstimate& PoseFusion::posterior(long i) const {
+  return i < 0 ? base_ : steps_[static_cast<size_t>(i)].posterior;
+}
+
+bool PoseFusion::lost(int64_t now_utime) const {
+  return lost_by_rejections_ ||
+         static_cast<double>(now_utime - last_accepted_fix_utime_) > config_.lost_after * 1e6;
+}
+
+FusionStatus PoseFusion::status(int64_t now_utime) const {
+  if (!initialised_) return FusionStatus::kInitializing;
+  if (lost(now_utime)) return FusionStatus::kLost;
+  if (static_cast<double>(now_utime - last_accepted_fix_utime_) > config_.degraded_after * 1e6) {
+    return FusionStatus::kDegraded;
+  }
+  return FusionStatus::kOk;
+}
+
+bool PoseFusion::add_odometry(int64_t utime, const Pose2& delta, const Eigen::Matrix3d& q) {
+  if (utime <= this->utime()) return false;
+  Step step;
+  step.utime = utime;
+  step.delta = delta;
+  step.q = q;
+  step.posterior = ekf_predict(estimate(), delta, q);
+  steps_.push_back(std::move(step));
+  trim_history();
+  return true;
+}
+
+void PoseFusion::trim_history() {
+  const auto horizon = utime() - static_cast<int64_t>(config_.history * 1e6);
+  while (steps_.size() > 1 && steps_.front().utime < horizon) {
+    base_ = steps_.front().posterior;
+    base_utime_ = steps_.front().utime;
+    steps_.pop_front();
+  }
+}
+
+void PoseFusion::recompute(size_t i) {
+  Step& step = steps_[i];
+  step.posterior = ekf_predict(posterior(static_cast<long>(i) - 1), step.delta, step.q);
+  for (const AppliedFix& fix : step.fixes) {
+    step.posterior = ekf_correct(step.posterior, fix.map_T_robot, fix.covariance);
+  }
+}
+
+void PoseFusion::repropagate_from(size_t first) {
+  for (size_t i = first; i < steps_.size(); ++i) recompute(i);
+}
+
+long PoseFusion::step_ending_at(int64_t t) {
+  size_t i = 0;
+  while (i < steps_.size() && steps_[i].utime < t) ++i;
+  if (i == steps_.size()) return static_cast<long>(i) - 1;
+  if (steps_[i].utime == t) return static_cast<long>(i);
+  const int64_t start = i == 0 ? base_utime_ : steps_[i - 1].utime;
+  if (t <= start) return static_cast<long>(i) - 1;
+  // Split step i at t, assuming a constant body twist over it (the exact-arc model).
+  const double alpha = static_cast<double>(t - start) / static_cast<double>(steps_[i].utime - start);
+  Step first;
+  first.utime = t;
+  first.delta = exp_twist(log_pose(steps_[i].delta), alpha);
+  first.q = alpha * steps_[i].q;
+  steps_[i].delta = first.delta.inverse() * steps_[i].delta;
+  steps_[i].q *= 1.0 - alpha;
+  steps_.insert(steps_.begin() + static_cast<long>(i), std::move(first));
+  recompute(i);
+  recompute(i + 1);
+  return static_cast<long>(i);
+}
+
+void PoseFusion::initialise(const PoseFix& fix) {
+  // Everything before the fix is forgotten: the fix becomes the base and the
+  // odometry after it is re-applied. A fix newer than the latest odometry is
+  // taken as a fix at that time (one encoder period at most).
+  if (!steps_.empty() && fix.utime < utime()) {
+    const long i = step_ending_at(std::max(fix.utime, base_utime_));
+    base_utime_ = i < 0 ? base_utime_ : steps_[static_cast<size_t>(i)].utime;
+    steps_.erase(steps_.begin(), steps_.begin() + (i + 1));
+    for (Step& step : steps_) step.fixes.clear();  // accepted by the filter that got lost
+  } else {
+    base_utime_ = steps_.empty() && base_utime_ == 0 ? fix.utime : utime();
+    steps_.clear();
+  }
+  base_ = {fix.map_T_robot, fix.covariance};
+  repropagate_from(0);
+  initialised_ = true;
+  lost_by_rejections_ = false;
+  consecutive_rejections_ = 0;
+  last_accepted_fix_utime_ = fix.utime;
+}
+
+FixResult PoseFusion::add_fix(const PoseFix& fix) {
+  if (!initialised_ || lost(std::max(utime(), fix.utime))) {
+    if (fix.quality != FixQuality::kGood) return FixResult::kWaitingForGood;
+    initialise(fix);
+    return FixResult::kInitialised;
+  }
+  if (fix.utime < base_utime_) return FixResult::kTooOld;
+  // A fix newer than the latest odometry is applied to the latest estimate.
+  const long i = step_ending_at(std::min(fix.utime, utime()));
+  last_mahalanobis_squared_ = mahalanobis_squared(posterior(i), fix.map_T_robot, fix.covariance);
+  if (last_mahalanobis_squared_ > config_.gate_chi2) {
+    if (++consecutive_rejections_ >= config_.max_consecutive_rejections) lost_by_rejections_ = true;
+    return FixResult::kRejectedGate;
+  }
+  consecutive_rejections_ = 0;
+  last_accepted_fix_utime_ = std::max(last_accepted_fix_utime_, fix.utime);
+  if (i < 0) {
+    base_ = ekf_correct(base_, fix.map_T_robot, fix.covariance);
+    repropagate_from(0);
+  } else {
+    steps_[static_cast<size_t>(i)].fixes.push_back({fix.map_T_robot, fix.covariance});
+    recompute(static_cast<size_t>(i));
+    repropagate_from(static_cast<size_t>(i) + 1);
+  }
+  return FixResult::kAccepted;
+}
+
+}  // namespace refloc

@@ -1,0 +1,114 @@
+#pragma once
+// Fusion of wheel odometry with absolute laser pose fixes that arrive late.
+//
+// A laser fix describes the pose at its scan's time, typically 30-80 ms before
+// it arrives, while odometry has moved on. The filter keeps a short history of
+// odometry steps with the estimate after each; a fix is applied AT ITS OWN
+// TIME (the step spanning that time is split), and every later step is
+// re-applied on top. Accepted fixes stay in the history, so a fix older than
+// another one that already arrived is still handled exactly.
+//
+// Status: INITIALIZING until the first good fix; OK while the last accepted fix
+// is at most degraded_after old; DEGRADED after that; LOST after lost_after, or
+// after max_consecutive_rejections gated-out fixes in a row. From LOST the
+// filter re-initialises from the next good fix, without the gate.
+
+#include "common/se2.hpp"
+#include "pose_fusion/pose_ekf.hpp"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+namespace refloc {
+
+struct FusionConfig {
+  double history = 1.0;                 ///< how far back a fix can be applied [s]
+  double gate_chi2 = 16.27;             ///< Mahalanobis^2 gate, chi-square 3 dof at 99.9 %
+  double degraded_after = 1.0;          ///< no accepted fix this long: DEGRADED [s]
+  double lost_after = 5.0;              ///< no accepted fix this long: LOST [s]
+  int max_consecutive_rejections = 10;  ///< this many gated-out fixes in a row: LOST
+};
+
+enum class FusionStatus { kInitializing, kOk, kDegraded, kLost };
+
+/// How a fix may be used: kGood (solver OK) may (re-)initialise the filter,
+/// kUsable (solver DEGRADED: few reflectors) only corrects an initialised one.
+enum class FixQuality { kGood, kUsable };
+
+struct PoseFix {
+  int64_t utime = 0;  ///< time the pose refers to [us]
+  Pose2 map_T_robot;
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  ///< [m^2, m rad, rad^2]
+  FixQuality quality = FixQuality::kGood;
+};
+
+enum class FixResult {
+  kAccepted,
+  kInitialised,     ///< the filter was (re-)initialised from this fix
+  kRejectedGate,    ///< Mahalanobis distance above the gate
+  kTooOld,          ///< older than the history
+  kWaitingForGood,  ///< not initialised and the fix is not good enough to start from
+};
+
+class PoseFusion {
+ public:
+  explicit PoseFusion(const FusionConfig& config);
+
+  /// Odometry displacement delta (body frame, covariance q) from the previous
+  /// odometry time to utime [us]. Returns false (ignored) when not after the last one.
+  bool add_odometry(int64_t utime, const Pose2& delta, const Eigen::Matrix3d& q);
+
+  /// An absolute pose fix; applied at fix.utime.
+  FixResult add_fix(const PoseFix& fix);
+
+  /// Status at now_utime [us] (normally the latest odometry time).
+  FusionStatus status(int64_t now_utime) const;
+  /// The estimate after the latest odometry step.
+  const PoseEstimate& estimate() const;
+  /// Time of estimate() [us].
+  int64_t utime() const;
+  bool initialised() const { return initialised_; }
+  int consecutive_rejections() const { return consecutive_rejections_; }
+  double last_mahalanobis_squared() const { return last_mahalanobis_squared_; }
+
+ private:
+  struct AppliedFix {
+    Pose2 map_T_robot;
+    Eigen::Matrix3d covariance;
+  };
+  struct Step {
+    int64_t utime = 0;  ///< end of the step (start: the previous step's or the base's utime)
+    Pose2 delta;
+    Eigen::Matrix3d q = Eigen::Matrix3d::Zero();
+    std::vector<AppliedFix> fixes;  ///< accepted fixes at utime, re-applied on every rollback
+    PoseEstimate posterior;         ///< after delta and the fixes
+  };
+
+  bool lost(int64_t now_utime) const;
+  void initialise(const PoseFix& fix);
+  /// Index of a step ending exactly at t (splitting the step spanning t), or -1
+  /// for the base. Requires base_utime_ <= t <= utime().
+  long step_ending_at(int64_t t);
+  const PoseEstimate& posterior(long i) const;
+  /// Recompute step i's posterior from its predecessor, its delta and its fixes.
+  void recompute(size_t i);
+  void repropagate_from(size_t first);
+  void trim_history();
+
+  FusionConfig config_;
+  bool initialised_ = false;
+  bool lost_by_rejections_ = false;
+  PoseEstimate base_;
+  int64_t base_utime_ = 0;
+  std::deque<Step> steps_;
+  int64_t last_accepted_fix_utime_ = 0;
+  int consecutive_rejections_ = 0;
+  double last_mahalanobis_squared_ = 0.0;
+};
+
+const char* to_string(FusionStatus status);
+
+}  // namespace refloc
