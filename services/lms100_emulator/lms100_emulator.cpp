@@ -77,8 +77,8 @@ void Lms100Emulator::Server::run() {
   while (!stop.load()) {
     const int64_t now_mono = monotonic_us();
     apply_faults(now_mono);
-    const uint64_t complete_delay = static_cast<uint64_t>(
-        (device.full_scan_beams() * kTimeIncrementS + config.processing_delay_s) * 1e6);
+    const auto complete_delay = static_cast<uint64_t>(
+        std::llround((device.full_scan_beams() * kTimeIncrementS + config.processing_delay_s) * 1e6));
     ScanSlot slot;
     while (device.scheduler().pop_due_scan(device_now(), complete_delay, slot)) emit_scan(slot, true);
 
