@@ -1,0 +1,96 @@
+#pragma once
+// What an LMS100 does to a perfect measurement: range noise and limits, the
+// widening beam (mixed pixels), and the received signal strength (RSSI).
+// Figures from /work/shared/LMS100_PROTOCOL.md §3.4 and §6; where SICK publishes
+// nothing (the 16-bit RSSI scale) the model is a documented assumption.
+//
+// RSSI model, in 16-bit units (8-bit = 16-bit / 257):
+//  - diffuse: the lidar equation for an extended Lambertian target gives an
+//    energy E = remission * cos(incidence) / range^2; the sensor reports it on a
+//    logarithmic scale ("logarithmic, arbitrary unit", SICK OI), anchored so that
+//    the datasheet's detection limit (10 % remission at 18 m) gives
+//    rssi_at_detection_limit, rising rssi_per_decade per factor 10 of E, capped
+//    at diffuse_rssi_max. Defaults: white paper at 1 m ~ 25000, 50 % at 10 m ~ 9400.
+//  - retro-reflector (cylinder): saturated, retro_rssi_near minus a mild
+//    retro_rssi_drop_per_m * range, times cos(incidence)^retro_incidence_exponent
+//    (the film dims only towards the cylinder's silhouette).
+//  - reflective tape: as bright as a reflector up to tape_full_incidence, then
+//    falling linearly to nothing at tape_cutoff_incidence.
+//  - metal: a specular lobe exp(-(incidence / metal_lobe_width)^2) * metal_rssi_peak,
+//    or its weak diffuse part, whichever is brighter.
+//  - partial hits: a beam's RSSI is the beam-profile weighted sum over the parts
+//    of the spot that hit each surface, i.e. proportional to coverage.
+
+#include <string>
+
+namespace refloc {
+class JsonConfig;
+}
+
+namespace refloc::sim {
+
+struct Lms100ErrorModel {
+  // Range.
+  double range_sigma = 0.012;   ///< statistical error, 1 sigma Gaussian [m] (SICK: 12 mm typical)
+  double range_offset = 0.0;    ///< systematic error added to every range [m] (SICK: up to +-30 mm)
+  double range_min = 0.05;      ///< nearer echoes are reported as no echo (0) [m]
+  double range_max = 20.0;      ///< farther echoes are reported as no echo (0) [m]
+  bool quantize_to_mm = true;   ///< the sensor sends whole millimetres
+
+  // Beam: the spot is beam_exit_diameter + range * beam_divergence wide (SICK OI §3.6.2).
+  double beam_divergence = 0.015;     ///< full angle of the 1/e^2 spot [rad]
+  double beam_exit_diameter = 0.008;  ///< spot diameter at the optics cover [m]
+  int beam_subrays = 11;              ///< rays sampling the spot across its width [-], 1..31
+  /// Returns closer together than this blend into one echo whose range is the
+  /// energy-weighted mean (the mixed pixel); farther apart they are separate
+  /// echoes and the nearest detectable one is reported (DIST1 is the first echo).
+  double echo_merge_distance = 0.4;   ///< [m], about half the pulse length
+
+  // Diffuse surfaces (logarithmic scale, see above).
+  double detection_limit_remission = 0.10;  ///< remission detectable at detection_limit_range [-]
+  double detection_limit_range = 18.0;      ///< [m] (datasheet: 18 m at 10 %)
+  double rssi_at_detection_limit = 1000.0;  ///< weaker echoes are not detected [16-bit units]
+  double rssi_per_decade = 7000.0;          ///< RSSI rise per factor 10 of energy [16-bit units]
+  double diffuse_rssi_max = 30000.0;        ///< [16-bit units]; below the reflector band
+  double max_incidence = 1.518;             ///< no diffuse echo beyond this incidence [rad] (87 deg)
+
+  // Cylindrical retro-reflectors.
+  double retro_rssi_near = 65000.0;         ///< [16-bit units]
+  double retro_rssi_drop_per_m = 100.0;     ///< [16-bit units / m]
+  double retro_incidence_exponent = 0.3;    ///< cos(incidence)^this [-]
+
+  // Flat reflective tape.
+  double tape_rssi_near = 64000.0;          ///< [16-bit units]
+  double tape_full_incidence = 0.70;        ///< full brightness up to here [rad] (40 deg)
+  double tape_cutoff_incidence = 1.31;      ///< no retro return beyond [rad] (75 deg)
+
+  // Polished metal.
+  double metal_rssi_peak = 64000.0;         ///< at normal incidence [16-bit units]
+  double metal_lobe_width = 0.09;           ///< 1/e half-width of the specular lobe [rad] (5 deg)
+
+  // Reported values.
+  double rssi_sigma = 150.0;                ///< Gaussian noise on RSSI [16-bit units]
+  double dazzle_range = 0.0;  ///< retro echoes nearer than this report code 1 "dazzled" [m]; 0 = never
+
+  /// Energy of a diffuse echo at the detection limit [1/m^2].
+  double detection_limit_energy() const {
+    return detection_limit_remission / (detection_limit_range * detection_limit_range);
+  }
+  /// Spot diameter at a range [m].
+  double spot_diameter(double range) const { return beam_exit_diameter + range * beam_divergence; }
+};
+
+/// RSSI of a diffuse surface fully covering the spot [16-bit units]; 0 when not detectable.
+double diffuse_rssi(const Lms100ErrorModel& model, double remission, double cos_incidence, double range);
+/// RSSI of a retro-reflector cylinder fully covering the spot [16-bit units].
+double retro_reflector_rssi(const Lms100ErrorModel& model, double cos_incidence, double range);
+/// RSSI of reflective tape fully covering the spot [16-bit units].
+double tape_rssi(const Lms100ErrorModel& model, double remission, double cos_incidence, double range);
+/// RSSI of polished metal fully covering the spot [16-bit units].
+double metal_rssi(const Lms100ErrorModel& model, double remission, double cos_incidence, double range);
+
+/// Read the model from an object at pointer; absent keys keep the defaults. Angles
+/// are in degrees in the file (keys *_deg), lengths in metres, RSSI in 16-bit units.
+Lms100ErrorModel parse_lms100_error_model(const JsonConfig& config, const std::string& pointer);
+
+}  // namespace refloc::sim

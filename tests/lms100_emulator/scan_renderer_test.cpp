@@ -1,0 +1,266 @@
+#include "lms100_emulator/scan_renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+namespace refloc::sim {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+constexpr double kPaperRssiThreshold16 = 180.0 * 257.0;  // the paper's 8-bit energy threshold 180
+
+World wall_world(double wall_x, double remission = 0.5) {
+  World world;
+  add_polyline(world, {{wall_x, -30.0}, {wall_x, 30.0}}, false, SurfaceKind::kDiffuse, remission);
+  return world;
+}
+
+void add_reflector(World& world, int id, double x, double y) {
+  MapReflector r;
+  r.id = id;
+  r.map_p_center = {x, y};
+  world.reflectors.reflectors.push_back(r);
+}
+
+ScanRenderConfig noise_free_config() {
+  ScanRenderConfig c;
+  c.sensor.range_sigma = 0.0;
+  c.sensor.rssi_sigma = 0.0;
+  c.sensor.quantize_to_mm = false;
+  return c;
+}
+
+size_t beam_at(const LaserScan& scan, double angle) {
+  return static_cast<size_t>(std::lround((angle - scan.start_angle) / scan.angle_increment));
+}
+
+TEST(ScanRenderer, FillsTheLaserScanWithLms100Geometry) {
+  std::mt19937_64 rng(1);
+  LaserScan scan;
+  render_scan(wall_world(5.0), Pose2{}, 1'000'000, ScanRenderConfig{}, rng, scan);
+  ASSERT_EQ(scan.ranges.size(), 541u);
+  ASSERT_EQ(scan.rssi.size(), 541u);
+  EXPECT_EQ(scan.utime, 1'000'000);
+  EXPECT_EQ(scan.rssi_bits, 16);
+  EXPECT_NEAR(scan.start_angle, -135.0 * kDeg, 1e-12);
+  EXPECT_NEAR(scan.angle_increment, 0.5 * kDeg, 1e-12);
+  EXPECT_NEAR(scan.time_increment, 1.0 / 36000.0, 1e-12);
+  EXPECT_NEAR(scan.scan_period, 0.02, 1e-12);
+  EXPECT_NEAR(scan.beam_angle(540), 135.0 * kDeg, 1e-9);
+  EXPECT_EQ(scan.beam_utime(540), 1'000'000 + 15'000);  // 540 beams at 27.78 us
+}
+
+TEST(ScanRenderer, BeamStraightAtWallReturnsItsDistanceWithinNoise) {
+  const World world = wall_world(5.0);
+  ScanRenderer renderer;
+  std::mt19937_64 rng(7);
+  LaserScan scan;
+  std::vector<double> centre;
+  for (int k = 0; k < 400; ++k) {
+    renderer.render(world, Pose2{}, 0, rng, scan);
+    centre.push_back(scan.ranges[270]);
+    for (size_t i = 250; i <= 290; ++i) {
+      EXPECT_NEAR(scan.ranges[i], 5.0 / std::cos(scan.beam_angle(i)), 5 * 0.012) << "beam " << i;
+    }
+  }
+  const double mean = std::accumulate(centre.begin(), centre.end(), 0.0) / centre.size();
+  double var = 0.0;
+  for (double r : centre) var += (r - mean) * (r - mean);
+  const double sigma = std::sqrt(var / (centre.size() - 1));
+  EXPECT_NEAR(mean, 5.0, 0.003);
+  EXPECT_NEAR(sigma, 0.012, 0.002);
+}
+
+TEST(ScanRenderer, SystematicOffsetShiftsEveryRange) {
+  ScanRenderConfig config = noise_free_config();
+  config.sensor.range_offset = 0.03;
+  std::mt19937_64 rng(1);
+  LaserScan scan;
+  render_scan(wall_world(4.0), Pose2{}, 0, config, rng, scan);
+  EXPECT_NEAR(scan.ranges[270], 4.03, 1e-4);
+}
+
+TEST(ScanRenderer, ReflectorIsHitByAboutItsWidthOverPointSpacingBeams) {
+  for (const double d : {1.5, 2.0, 3.0, 5.0, 8.0}) {
+    World world = wall_world(d + 2.0);
+    add_reflector(world, 1, d, 0.013);  // off the beam grid's symmetry
+    ScanRenderer renderer(noise_free_config());
+    std::mt19937_64 rng(3);
+    LaserScan scan;
+    renderer.render(world, Pose2{}, 0, rng, scan);
+    int hits = 0;
+    for (const BeamTruth& t : renderer.truth()) hits += t.kind == HitKind::kReflector && t.coverage >= 0.5;
+    const double expected = 0.12 / (d * std::tan(0.5 * kDeg));
+    EXPECT_NEAR(hits, expected, 1.5) << "at " << d << " m";
+  }
+}
+
+TEST(ScanRenderer, ReflectorBeamsAreBrightAndWallBeamsDim) {
+  World world = wall_world(6.0);
+  add_reflector(world, 1, 3.0, 0.0);
+  ScanRenderer renderer;
+  std::mt19937_64 rng(5);
+  LaserScan scan;
+  renderer.render(world, Pose2{}, 0, rng, scan);
+  EXPECT_GE(scan.rssi[270], 60000);
+  EXPECT_NEAR(scan.ranges[270], 2.94, 0.05);
+  for (size_t i = 180; i <= 360; ++i) {
+    if (renderer.truth()[i].kind != HitKind::kDiffuse) continue;
+    EXPECT_GE(scan.rssi[i], 2000) << "beam " << i;
+    EXPECT_LE(scan.rssi[i], 20000) << "beam " << i;
+  }
+}
+
+TEST(ScanRenderer, DiffuseRssiFallsWithRangeAndIncidence) {
+  const Lms100ErrorModel m;
+  EXPECT_GT(diffuse_rssi(m, 0.5, 1.0, 2.0), diffuse_rssi(m, 0.5, 1.0, 8.0));
+  EXPECT_GT(diffuse_rssi(m, 0.5, 1.0, 4.0), diffuse_rssi(m, 0.5, std::cos(60 * kDeg), 4.0));
+  EXPECT_NEAR(diffuse_rssi(m, 0.10, 1.0, 18.0), m.rssi_at_detection_limit, 1e-6);
+  EXPECT_EQ(diffuse_rssi(m, 0.5, std::cos(89 * kDeg), 4.0), 0.0);  // grazing: no echo
+  EXPECT_LT(diffuse_rssi(m, 0.9, 1.0, 0.5), kPaperRssiThreshold16);
+  EXPECT_GE(retro_reflector_rssi(m, 1.0, 20.0), 60000.0);
+}
+
+TEST(ScanRenderer, EdgeBeamsOfAReflectorAreDimmerThanItsCentre) {
+  World world = wall_world(5.0);
+  add_reflector(world, 1, 2.0, 0.0);
+  ScanRenderer renderer(noise_free_config());
+  std::mt19937_64 rng(5);
+  LaserScan scan;
+  renderer.render(world, Pose2{}, 0, rng, scan);
+  std::vector<int32_t> reflector_rssi;
+  for (size_t i = 0; i < scan.ranges.size(); ++i) {
+    if (renderer.truth()[i].kind == HitKind::kReflector) reflector_rssi.push_back(scan.rssi[i]);
+  }
+  ASSERT_GE(reflector_rssi.size(), 7u);
+  EXPECT_GE(reflector_rssi[reflector_rssi.size() / 2], 60000);
+  EXPECT_LT(reflector_rssi.front(), 0.8 * reflector_rssi[reflector_rssi.size() / 2]);
+  EXPECT_LT(reflector_rssi.back(), 0.8 * reflector_rssi[reflector_rssi.size() / 2]);
+}
+
+TEST(ScanRenderer, MixedPixelsAppearBetweenForegroundAndBackgroundAtAnEdge) {
+  World world = wall_world(3.3);
+  // A plate 0.3 m in front of the wall, its edge on the beam axis.
+  add_polyline(world, {{3.0, 0.0}, {3.0, -2.0}}, false, SurfaceKind::kDiffuse, 0.5);
+  ScanRenderer renderer(noise_free_config());
+  std::mt19937_64 rng(5);
+  LaserScan scan;
+  renderer.render(world, Pose2{}, 0, rng, scan);
+  int mixed = 0;
+  for (size_t i = 260; i <= 280; ++i) {
+    const double x = scan.ranges[i] * std::cos(scan.beam_angle(i));
+    if (x > 3.02 && x < 3.28) ++mixed;
+  }
+  EXPECT_GE(mixed, 1);
+  EXPECT_LE(mixed, 3);
+  EXPECT_NEAR(scan.ranges[beam_at(scan, -3 * kDeg)] * std::cos(3 * kDeg), 3.0, 1e-3);
+  EXPECT_NEAR(scan.ranges[beam_at(scan, 3 * kDeg)] * std::cos(3 * kDeg), 3.3, 1e-3);
+}
+
+TEST(ScanRenderer, NoEchoBeyondTwentyMetres) {
+  std::mt19937_64 rng(1);
+  LaserScan scan;
+  render_scan(wall_world(25.0, 1.0), Pose2{}, 0, ScanRenderConfig{}, rng, scan);
+  for (size_t i = 0; i < scan.ranges.size(); ++i) {
+    EXPECT_EQ(scan.ranges[i], 0.0f) << "beam " << i;
+    EXPECT_EQ(scan.rssi[i], 0) << "beam " << i;
+  }
+  render_scan(wall_world(19.0, 0.5), Pose2{}, 0, ScanRenderConfig{}, rng, scan);
+  EXPECT_NEAR(scan.ranges[270], 19.0, 0.06);
+}
+
+TEST(ScanRenderer, DarkSurfaceFadesOutBeforeTheRangeLimit) {
+  std::mt19937_64 rng(1);
+  LaserScan scan;
+  render_scan(wall_world(17.0, 0.10), Pose2{}, 0, ScanRenderConfig{}, rng, scan);
+  EXPECT_NEAR(scan.ranges[270], 17.0, 0.06);  // 10 % is seen to 18 m
+  render_scan(wall_world(17.0, 0.05), Pose2{}, 0, ScanRenderConfig{}, rng, scan);
+  EXPECT_EQ(scan.ranges[270], 0.0f);
+}
+
+TEST(ScanRenderer, BeamsAreCastFromThePoseAtTheirOwnTime) {
+  const World world = wall_world(5.0);
+  const double speed = 4.0;  // [m/s] towards the wall
+  const PoseAtTime moving = [speed](int64_t utime) { return Pose2{speed * utime * 1e-6, 0.0, 0.0}; };
+  ScanRenderer renderer(noise_free_config());
+  std::mt19937_64 rng(1);
+  LaserScan moved;
+  LaserScan still;
+  renderer.render(world, moving, 0, rng, moved);
+  renderer.render(world, Pose2{}, 0, rng, still);
+  for (size_t i = 190; i <= 350; ++i) {
+    const double t = i / 36000.0;
+    EXPECT_NEAR(moved.ranges[i], (5.0 - speed * t) / std::cos(moved.beam_angle(i)), 1e-3) << "beam " << i;
+  }
+  // Beam 350 (+40 deg) is measured 9.7 ms after beam 0, beam 190 (-40 deg) 5.3 ms:
+  // a static renderer would be 3.9 cm and 2.1 cm off along x.
+  EXPECT_NEAR(still.ranges[350] - moved.ranges[350], speed * (350 / 36000.0) / std::cos(40 * kDeg), 1e-3);
+  EXPECT_NEAR(still.ranges[190] - moved.ranges[190], speed * (190 / 36000.0) / std::cos(40 * kDeg), 1e-3);
+}
+
+TEST(ScanRenderer, SameSeedSameScanOtherSeedOtherNoise) {
+  World world = wall_world(5.0);
+  add_reflector(world, 1, 3.0, 0.5);
+  LaserScan a;
+  LaserScan b;
+  LaserScan c;
+  std::mt19937_64 rng_a(42);
+  std::mt19937_64 rng_b(42);
+  std::mt19937_64 rng_c(43);
+  render_scan(world, Pose2{0.1, 0.2, 0.3}, 0, ScanRenderConfig{}, rng_a, a);
+  render_scan(world, Pose2{0.1, 0.2, 0.3}, 0, ScanRenderConfig{}, rng_b, b);
+  render_scan(world, Pose2{0.1, 0.2, 0.3}, 0, ScanRenderConfig{}, rng_c, c);
+  EXPECT_EQ(a.ranges, b.ranges);
+  EXPECT_EQ(a.rssi, b.rssi);
+  EXPECT_NE(a.ranges, c.ranges);
+}
+
+TEST(ScanRenderer, TapeIsBrightUntilSteepIncidenceMetalOnlyNearNormal) {
+  for (const auto& [surface, incidence_deg, bright] :
+       std::vector<std::tuple<SurfaceKind, double, bool>>{{SurfaceKind::kReflectiveTape, 0.0, true},
+                                                          {SurfaceKind::kReflectiveTape, 30.0, true},
+                                                          {SurfaceKind::kReflectiveTape, 80.0, false},
+                                                          {SurfaceKind::kMetal, 0.0, true},
+                                                          {SurfaceKind::kMetal, 20.0, false},
+                                                          {SurfaceKind::kMetal, 45.0, false}}) {
+    World world;
+    // A 1 m strip through (4, 0), tilted so the centre beam meets it at incidence_deg.
+    const double a = incidence_deg * kDeg;
+    const Eigen::Vector2d along(-std::sin(a), std::cos(a));
+    add_polyline(world, {Eigen::Vector2d(4, 0) - 0.5 * along, Eigen::Vector2d(4, 0) + 0.5 * along}, false,
+                 surface, surface == SurfaceKind::kMetal ? 0.05 : 0.8);
+    ScanRenderer renderer(noise_free_config());
+    std::mt19937_64 rng(1);
+    LaserScan scan;
+    renderer.render(world, Pose2{}, 0, rng, scan);
+    if (bright) {
+      EXPECT_GT(scan.rssi[270], kPaperRssiThreshold16) << surface_kind_name(surface) << " at " << incidence_deg;
+    } else {
+      EXPECT_LT(scan.rssi[270], 30000) << surface_kind_name(surface) << " at " << incidence_deg;
+    }
+  }
+}
+
+TEST(ScanRenderer, EightBitRssiPassesThePaperThresholdOnReflectorsOnly) {
+  World world = wall_world(6.0, 0.9);
+  add_reflector(world, 1, 3.0, 0.0);
+  ScanRenderConfig config;
+  config.rssi_bits = 8;
+  ScanRenderer renderer(config);
+  std::mt19937_64 rng(9);
+  LaserScan scan;
+  renderer.render(world, Pose2{}, 0, rng, scan);
+  EXPECT_EQ(scan.rssi_bits, 8);
+  for (size_t i = 0; i < scan.rssi.size(); ++i) {
+    EXPECT_LE(scan.rssi[i], 255);
+    if (renderer.truth()[i].kind == HitKind::kDiffuse) {
+      EXPECT_LT(scan.rssi[i], 180) << "beam " << i;
+    }
+  }
+  EXPECT_GE(scan.rssi[270], 180);
+}
+
+}  // namespace
+}  // namespace refloc::sim
