@@ -3,7 +3,11 @@
 #include "common/clock.hpp"
 
 #include <spdlog/sinks/stdout_color_sinks.h>
+#ifdef REFLOC_HAVE_SYSTEMD
+#include <systemd/sd-daemon.h>
+#endif
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -25,6 +29,24 @@ void install_signal_handlers() {
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
   std::signal(SIGPIPE, SIG_IGN);  // a closed TCP peer must be an error code, not a death
+}
+
+// sd_notify is a no-op returning 0 when NOTIFY_SOCKET is unset (not under systemd).
+void notify_systemd(const char* state) {
+#ifdef REFLOC_HAVE_SYSTEMD
+  sd_notify(0, state);
+#else
+  (void)state;
+#endif
+}
+
+/// Half of the watchdog interval systemd asked for [us]; 0 when there is none.
+int64_t watchdog_half_period_us() {
+#ifdef REFLOC_HAVE_SYSTEMD
+  uint64_t interval_us = 0;
+  if (sd_watchdog_enabled(0, &interval_us) > 0 && interval_us > 0) return static_cast<int64_t>(interval_us / 2);
+#endif
+  return 0;
 }
 
 }  // namespace
@@ -105,9 +127,26 @@ void ServiceRuntime::spin_once(int timeout_ms) {
   run_due_timers();
 }
 
+void ServiceRuntime::feed_watchdog_if_due() {
+  if (watchdog_period_us_ <= 0 || !watchdog_healthy_) return;
+  const int64_t now = monotonic_us();
+  if (now < watchdog_next_due_us_) return;
+  notify_systemd("WATCHDOG=1");
+  watchdog_next_due_us_ = now + watchdog_period_us_;
+}
+
 int ServiceRuntime::run() {
   if (state_ == heartbeat_t::STATE_STARTING) set_state(heartbeat_t::STATE_OK);
-  while (!stop_requested()) spin_once(100);
+  watchdog_period_us_ = watchdog_half_period_us();
+  watchdog_next_due_us_ = monotonic_us();
+  notify_systemd("READY=1");
+  // Fed from the loop itself: a handler that blocks stops the feeding, and systemd restarts us.
+  const int spin_ms = watchdog_period_us_ > 0 ? static_cast<int>(std::clamp<int64_t>(watchdog_period_us_ / 2000, 1, 100)) : 100;
+  while (!stop_requested()) {
+    spin_once(spin_ms);
+    feed_watchdog_if_due();
+  }
+  notify_systemd("STOPPING=1");
   set_state(heartbeat_t::STATE_STOPPING, g_signal_received ? "signal " + std::to_string(g_signal_received) : "stop requested");
   publish_heartbeat();
   spdlog::info("stopped: {} in, {} out, {} decode errors", messages_in_, messages_out_, decode_errors_);

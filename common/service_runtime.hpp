@@ -1,7 +1,9 @@
 #pragma once
 // The LCM service runtime every main.cpp uses: one LCM handle, typed
 // subscriptions that count decode errors, periodic timers, a 1 Hz HEARTBEAT,
-// and a handle loop that ends cleanly on SIGINT/SIGTERM.
+// and a handle loop that ends cleanly on SIGINT/SIGTERM. Under systemd
+// (Type=notify, WatchdogSec=) it reports READY, feeds the watchdog while the
+// loop iterates and the service says it is healthy, and reports STOPPING.
 
 #include "common/latency_window.hpp"
 
@@ -53,6 +55,10 @@ class ServiceRuntime {
 
   /// Run until a signal or request_stop(); returns 0.
   int run();
+  /// While false, run() stops feeding the systemd watchdog, so systemd restarts a
+  /// service that knows it is stuck (e.g. its sensor link is gone for good).
+  void set_watchdog_healthy(bool healthy) { watchdog_healthy_ = healthy; }
+  bool watchdog_healthy() const { return watchdog_healthy_; }
   /// Process events for at most timeout_ms; for tests and tools that drive the loop.
   void spin_once(int timeout_ms);
   void request_stop() { stop_requested_ = true; }
@@ -71,6 +77,7 @@ class ServiceRuntime {
   };
   static void dispatch(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub);
   void run_due_timers();
+  void feed_watchdog_if_due();
 
   struct Periodic {
     int64_t period_us;
@@ -91,6 +98,9 @@ class ServiceRuntime {
   int64_t messages_out_ = 0;
   int64_t decode_errors_ = 0;
   bool stop_requested_ = false;
+  bool watchdog_healthy_ = true;
+  int64_t watchdog_period_us_ = 0;  ///< half of WatchdogSec; 0 when systemd asked for none
+  int64_t watchdog_next_due_us_ = 0;
 };
 
 template <class Message>
