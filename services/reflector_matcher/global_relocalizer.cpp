@@ -108,7 +108,12 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   result.map_T_laser = best_pose;
   result.hypothesis_score = best_score;
   result.runner_up_score = scored_.size() > 1 && runner_up > -1e300 ? runner_up : 0.0;
-  if (best_matched < config_.min_matches || best_score <= 0.0) return;
+  // Most detections of a real scan are reflectors: a pose that explains few of them is a
+  // chance alignment (or the map has changed), not a fix.
+  if (best_matched < config_.min_matches || best_score <= 0.0 ||
+      best_matched < config_.min_explained_fraction * static_cast<double>(detections.size())) {
+    return;
+  }
   for (const Association& a : best_associations_) {
     const MapReflector& r = map_.reflectors[static_cast<size_t>(a.map_index)];
     result.matches.push_back({a.detection_index, r.id, r.map_p_center, r.radius});

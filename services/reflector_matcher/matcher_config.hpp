@@ -41,6 +41,7 @@ struct MatcherConfig {
   double verify_fine_gate = 0.15;         ///< [m] after refitting with all coarse matches
   double missed_penalty = 0.5;            ///< score lost per expected, unoccluded, unseen reflector
   double unexplained_penalty = 0.25;      ///< score lost per detection no map reflector explains
+  double min_explained_fraction = 0.6;    ///< of the detections, for a global OK
   double ambiguity_ratio = 0.8;           ///< runner-up/best at or above this -> AMBIGUOUS
   double distinct_pose_distance = 0.2;    ///< [m] a runner-up must differ at least this much ...
   double distinct_pose_angle = 5.0 * M_PI / 180.0;  ///< [rad] ... or this much from the best

@@ -74,9 +74,10 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
   Pose2 refined;
   if (!fit.solve(refined)) return false;
 
-  // Second pass with the refitted pose: a tight Euclidean gate, and the whole-scan score.
-  const int matched = refit_verifier_.associate(refined, detections, config_.tracking_refit_gate);
-  if (matched < config_.min_matches) return false;
+  // Greedy pairs under a wide gate can swap neighbours; the majority is right, so the refitted
+  // pose is close: associate again with the verifier's coarse-then-fine Euclidean gates.
+  const Verification v = refit_verifier_.verify(refined, detections);
+  if (v.matched < config_.min_matches) return false;
   RigidFit2d final_fit;
   for (const Association& a : refit_verifier_.associations()) {
     const MapReflector& r = map_.reflectors[static_cast<size_t>(a.map_index)];
@@ -84,7 +85,7 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
     final_fit.add(detections[static_cast<size_t>(a.detection_index)].laser_p_center, r.map_p_center);
   }
   final_fit.solve(result.map_T_laser);
-  result.hypothesis_score = matched;
+  result.hypothesis_score = v.score;
   result.status = MatchStatus::kOk;
   return true;
 }

@@ -1,0 +1,97 @@
+#include "reflector_matcher/reflector_matcher.hpp"
+
+#include "match_checks.hpp"
+#include "synthetic_detections.hpp"
+
+#include <gtest/gtest.h>
+
+namespace refloc {
+namespace {
+
+using testing::SyntheticSensor;
+
+Pose2 random_pose(std::mt19937& rng, double width, double height) {
+  std::uniform_real_distribution<double> ux(0, width), uy(0, height), ua(-M_PI, M_PI);
+  return {ux(rng), uy(rng), ua(rng)};
+}
+
+TEST(GlobalRelocalization, NeverWrongOkOverThousandRandomPosesInATwentyReflectorMap) {
+  std::mt19937 rng(7);
+  const ReflectorMap map = testing::random_map(20, 40, 40, 1.0, rng);
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  const SyntheticSensor sensor;
+  MatchResult result;
+  int wrong_ok = 0, ok = 0, ok_correct = 0, with_four = 0, ok_with_four = 0, ambiguous = 0;
+  for (int trial = 0; trial < 1000; ++trial) {
+    const Pose2 truth = random_pose(rng, 40, 40);
+    const auto scan = testing::render_detections(map, truth, sensor, rng);
+    matcher.match(scan.detections, nullptr, result);
+    EXPECT_EQ(result.mode, MatchMode::kGlobal);
+    EXPECT_EQ(result.ndetections, static_cast<int>(scan.detections.size()));
+    wrong_ok += testing::is_wrong_ok(result, scan, map, truth);
+    ambiguous += result.status == MatchStatus::kAmbiguous;
+    if (result.status == MatchStatus::kOk) {
+      ++ok;
+      ok_correct += result.matches.size() == scan.detections.size();
+    }
+    if (scan.detections.size() >= 4) {
+      ++with_four;
+      ok_with_four += result.status == MatchStatus::kOk;
+    }
+  }
+  RecordProperty("ok", ok);
+  RecordProperty("ambiguous", ambiguous);
+  std::printf("relocalization: %d OK (%d with every detection matched), %d ambiguous, %d/%d OK with >= 4 seen\n",
+              ok, ok_correct, ambiguous, ok_with_four, with_four);
+  EXPECT_EQ(wrong_ok, 0);
+  EXPECT_GE(ok_with_four, with_four * 95 / 100);
+}
+
+TEST(GlobalRelocalization, RecoversThePoseWithinNoise) {
+  std::mt19937 rng(8);
+  const ReflectorMap map = testing::random_map(20, 40, 40, 1.0, rng);
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  MatchResult result;
+  int checked = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const Pose2 truth = random_pose(rng, 40, 40);
+    const auto scan = testing::render_detections(map, truth, SyntheticSensor{}, rng);
+    matcher.match(scan.detections, nullptr, result);
+    if (result.status != MatchStatus::kOk) continue;
+    ++checked;
+    EXPECT_TRUE(approx_equal(result.map_T_laser, truth, 0.05, 0.5 * M_PI / 180.0))
+        << result.map_T_laser.x - truth.x << " " << result.map_T_laser.y - truth.y;
+  }
+  EXPECT_GT(checked, 150);
+}
+
+TEST(GlobalRelocalization, FewerThanThreeDetectionsIsLost) {
+  std::mt19937 rng(9);
+  const ReflectorMap map = testing::random_map(20, 40, 40, 1.0, rng);
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  auto scan = testing::render_detections(map, Pose2{20, 20, 0}, SyntheticSensor{}, rng);
+  scan.detections.resize(2);
+  MatchResult result;
+  matcher.match(scan.detections, nullptr, result);
+  EXPECT_EQ(result.status, MatchStatus::kLost);
+  EXPECT_TRUE(result.matches.empty());
+}
+
+TEST(GlobalRelocalization, DetectionsFromNowhereAreLost) {
+  std::mt19937 rng(10);
+  const ReflectorMap map = testing::random_map(20, 40, 40, 1.0, rng);
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  std::uniform_real_distribution<double> u(-10, 10);
+  MatchResult result;
+  int ok = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<ReflectorDetection> detections(6);
+    for (auto& d : detections) d.laser_p_center = {u(rng), u(rng)};
+    matcher.match(detections, nullptr, result);
+    ok += result.status == MatchStatus::kOk;
+  }
+  EXPECT_LE(ok, 2);  // random points rarely look like five map reflectors
+}
+
+}  // namespace
+}  // namespace refloc

@@ -1,0 +1,80 @@
+#include "reflector_matcher/reflector_matcher.hpp"
+
+#include "match_checks.hpp"
+#include "synthetic_detections.hpp"
+
+#include <gtest/gtest.h>
+
+namespace refloc {
+namespace {
+
+/// A grid of columns x rows reflectors, spacing dx, dy: symmetric under a 180 deg turn.
+ReflectorMap grid_layout(int columns, int rows, double dx, double dy) {
+  std::vector<Eigen::Vector2d> points;
+  for (int i = 0; i < columns; ++i)
+    for (int j = 0; j < rows; ++j) points.emplace_back(i * dx, j * dy);
+  return testing::map_from_points(points);
+}
+
+struct Tally {
+  int ok = 0, wrong_ok = 0, ambiguous = 0, lost = 0, seen3 = 0;
+};
+
+Tally run_random_poses(const ReflectorMap& map, int trials, double width, double height, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> ux(-2, width + 2), uy(-2, height + 2), ua(-M_PI, M_PI);
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  MatchResult result;
+  Tally t;
+  for (int trial = 0; trial < trials; ++trial) {
+    const Pose2 truth{ux(rng), uy(rng), ua(rng)};
+    const auto scan = testing::render_detections(map, truth, testing::SyntheticSensor{}, rng);
+    matcher.match(scan.detections, nullptr, result);
+    t.ok += result.status == MatchStatus::kOk;
+    t.wrong_ok += testing::is_wrong_ok(result, scan, map, truth);
+    t.ambiguous += result.status == MatchStatus::kAmbiguous;
+    t.lost += result.status == MatchStatus::kLost;
+    t.seen3 += scan.detections.size() >= 3;
+  }
+  return t;
+}
+
+TEST(SymmetricLayout, RectangleOfFourIsNeverOk) {
+  const Tally t = run_random_poses(grid_layout(2, 2, 8.0, 5.0), 500, 8.0, 5.0, 14);
+  EXPECT_EQ(t.wrong_ok, 0);
+  EXPECT_EQ(t.ok, 0);  // a 180 deg turn gives the identical scan: OK would be a coin toss
+  EXPECT_GE(t.ambiguous, t.seen3 * 9 / 10);
+}
+
+TEST(SymmetricLayout, TwoByThreeGridIsNeverOk) {
+  const Tally t = run_random_poses(grid_layout(3, 2, 6.0, 5.0), 500, 12.0, 5.0, 15);
+  EXPECT_EQ(t.wrong_ok, 0);
+  EXPECT_EQ(t.ok, 0);
+}
+
+TEST(SymmetricLayout, TwoByFourGridIsNeverWrongOk) {
+  // Partial views of a repetitive row can be unique or not; whatever is OK must be right.
+  const Tally t = run_random_poses(grid_layout(4, 2, 5.0, 4.0), 500, 15.0, 4.0, 16);
+  EXPECT_EQ(t.wrong_ok, 0);
+}
+
+TEST(SymmetricLayout, OneExtraReflectorBreaksTheSymmetry) {
+  ReflectorMap map = grid_layout(2, 2, 8.0, 5.0);
+  MapReflector extra;
+  extra.id = 99;
+  extra.map_p_center = {2.0, 5.0};
+  map.reflectors.push_back(extra);
+  std::mt19937 rng(17);
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  const Pose2 truth{4.0, -3.0, M_PI / 2};  // outside, facing the layout: all five in view
+  const auto scan = testing::render_detections(map, truth, testing::SyntheticSensor{}, rng);
+  ASSERT_EQ(scan.detections.size(), 5u);
+  MatchResult result;
+  matcher.match(scan.detections, nullptr, result);
+  EXPECT_EQ(result.status, MatchStatus::kOk);
+  EXPECT_EQ(result.matches.size(), 5u);
+  EXPECT_FALSE(testing::is_wrong_ok(result, scan, map, truth));
+}
+
+}  // namespace
+}  // namespace refloc

@@ -1,0 +1,77 @@
+#include "reflector_matcher/reflector_matcher.hpp"
+
+#include "match_checks.hpp"
+#include "synthetic_detections.hpp"
+
+#include <gtest/gtest.h>
+
+namespace refloc {
+namespace {
+
+TEST(TrackingAssociation, CorrectUnderPriorErrorOfTwentyCentimetresAndThreeDegrees) {
+  std::mt19937 rng(11);
+  const ReflectorMap map = testing::random_map(20, 40, 40, 1.0, rng);
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  std::uniform_real_distribution<double> ux(0, 40), ua(-M_PI, M_PI);
+  MatchResult result;
+  int tracked = 0, all_seen_matched = 0;
+  for (int trial = 0; trial < 1000; ++trial) {
+    const Pose2 truth{ux(rng), ux(rng), ua(rng)};
+    const auto scan = testing::render_detections(map, truth, testing::SyntheticSensor{}, rng);
+    if (scan.detections.size() < 3) continue;
+    const double dir = ua(rng);
+    PosePrior prior;
+    prior.map_T_laser = Pose2{truth.x + 0.2 * std::cos(dir), truth.y + 0.2 * std::sin(dir),
+                              truth.theta + (trial % 2 ? 3.0 : -3.0) * M_PI / 180.0};
+    prior.covariance = Eigen::Vector3d(0.1 * 0.1, 0.1 * 0.1, std::pow(2.0 * M_PI / 180.0, 2)).asDiagonal();
+    matcher.match(scan.detections, &prior, result);
+    ASSERT_EQ(result.mode, MatchMode::kTracking);
+    ASSERT_EQ(result.status, MatchStatus::kOk);
+    ASSERT_TRUE(testing::all_matches_correct(result, scan, map));
+    EXPECT_TRUE(approx_equal(result.map_T_laser, truth, 0.1, 1.0 * M_PI / 180.0)) << result.map_T_laser.x - truth.x << " " << result.map_T_laser.y - truth.y << " " << result.map_T_laser.theta - truth.theta << " n=" << result.matches.size();
+    ++tracked;
+    all_seen_matched += result.matches.size() == scan.detections.size();
+  }
+  EXPECT_GT(tracked, 800);
+  EXPECT_EQ(all_seen_matched, tracked);
+}
+
+TEST(TrackingAssociation, FallsBackToGlobalWhenThePriorIsFarOff) {
+  std::mt19937 rng(12);
+  const ReflectorMap map = testing::random_map(20, 40, 40, 1.0, rng);
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  const Pose2 truth{20, 20, 0.5};
+  const auto scan = testing::render_detections(map, truth, testing::SyntheticSensor{}, rng);
+  ASSERT_GE(scan.detections.size(), 4u);
+  PosePrior prior;
+  prior.map_T_laser = Pose2{5, 35, -2.0};
+  prior.covariance = Eigen::Matrix3d::Identity() * 1e-4;
+  MatchResult result;
+  matcher.match(scan.detections, &prior, result);
+  EXPECT_EQ(result.mode, MatchMode::kGlobal);
+  EXPECT_EQ(result.status, MatchStatus::kOk);
+  EXPECT_TRUE(testing::all_matches_correct(result, scan, map));
+  EXPECT_TRUE(approx_equal(result.map_T_laser, truth, 0.05, 0.01));
+}
+
+TEST(TrackingAssociation, IgnoresASpuriousDetectionFarFromEveryReflector) {
+  std::mt19937 rng(13);
+  const ReflectorMap map = testing::random_map(20, 40, 40, 1.0, rng);
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  const Pose2 truth{20, 20, 0.0};
+  auto scan = testing::render_detections(map, truth, testing::SyntheticSensor{}, rng);
+  ASSERT_GE(scan.detections.size(), 3u);
+  ReflectorDetection ghost;
+  ghost.laser_p_center = {0.5, 0.4};  // e.g. a shiny vest next to the robot
+  scan.detections.push_back(ghost);
+  scan.map_index.push_back(-1);
+  PosePrior prior{truth, Eigen::Matrix3d::Identity() * 1e-4};
+  MatchResult result;
+  matcher.match(scan.detections, &prior, result);
+  EXPECT_EQ(result.status, MatchStatus::kOk);
+  EXPECT_EQ(result.matches.size(), scan.detections.size() - 1);
+  for (const auto& m : result.matches) EXPECT_NE(m.detection_index, static_cast<int>(scan.detections.size()) - 1);
+}
+
+}  // namespace
+}  // namespace refloc
