@@ -56,6 +56,8 @@ class ScanRenderer {
   /// What each beam of the last render hit (noise-free).
   const std::vector<BeamTruth>& truth() const { return truth_; }
   const ScanRenderConfig& config() const { return config_; }
+  /// Change which beams the next renders produce (e.g. to follow an emulator's request).
+  void set_geometry(const ScanGeometry& geometry) { config_.geometry = geometry; }
   const BeamProfile& profile() const { return profile_; }
 
  private:
