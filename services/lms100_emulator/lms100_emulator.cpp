@@ -99,6 +99,7 @@ void Lms100Emulator::Server::run() {
       char drain[64];
       while (::read(wake_fd, drain, sizeof(drain)) > 0) {
       }
+      apply_faults(monotonic_us());  // before any request is answered under the old settings
     }
     if (fds[1].revents & POLLIN) accept_new_client();
     if (client_fd >= 0 && (fds[2].revents & (POLLIN | POLLHUP | POLLERR))) read_client();
