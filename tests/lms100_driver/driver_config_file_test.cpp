@@ -1,0 +1,58 @@
+#include "lms100_driver/driver_config_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace refloc {
+namespace {
+
+DriverServiceConfig parse(const std::string& text) {
+  JsonConfig file(nlohmann::json::parse(text), "test.json");
+  DriverServiceConfig c = parse_driver_config(file);
+  file.reject_unknown_keys();
+  return c;
+}
+
+TEST(DriverConfigFile, DefaultsAre50HzHalfDegree16BitRssi) {
+  const DriverServiceConfig c = parse("{}");
+  EXPECT_EQ(c.session.scan.frequency_1e2hz, 5000u);
+  EXPECT_EQ(c.session.scan.resolution_1e4deg, 5000u);
+  EXPECT_TRUE(c.session.output.rssi);
+  EXPECT_TRUE(c.session.output.rssi_16bit);
+  EXPECT_EQ(c.output_channel, "LMS100_SCAN");
+}
+
+TEST(DriverConfigFile, QuarterDegreeAt25HzAnd8BitRssi) {
+  const DriverServiceConfig c = parse(R"({"frequency_hz": 25, "resolution_deg": 0.25, "rssi_bits": 8})");
+  EXPECT_EQ(c.session.scan.frequency_1e2hz, 2500u);
+  EXPECT_EQ(c.session.scan.resolution_1e4deg, 2500u);
+  EXPECT_FALSE(c.session.output.rssi_16bit);
+  EXPECT_NEAR(c.session.scan_period_s(), 0.04, 1e-12);
+}
+
+TEST(DriverConfigFile, BadValuesNameTheKey) {
+  const auto message = [](const std::string& text) {
+    try {
+      parse(text);
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(message(R"({"frequency_hz": 30})").find("/frequency_hz"), std::string::npos);
+  EXPECT_NE(message(R"({"resolution_deg": 0.25})").find("/resolution_deg"), std::string::npos);
+  EXPECT_NE(message(R"({"rssi_bits": 12})").find("/rssi_bits"), std::string::npos);
+  EXPECT_NE(message(R"({"reply_timeout_s": -1})").find("/reply_timeout_s"), std::string::npos);
+  EXPECT_NE(message(R"({"rssi_bit": 8})").find("/rssi_bit"), std::string::npos);
+}
+
+TEST(DriverConfigFile, DeployedFileLoads) {
+  const JsonConfig file = JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/lms100_driver.json");
+  const DriverServiceConfig c = parse_driver_config(file);
+  EXPECT_NO_THROW(file.reject_unknown_keys());
+  EXPECT_EQ(c.session.scan.frequency_1e2hz, 5000u);
+}
+
+}  // namespace
+}  // namespace refloc
