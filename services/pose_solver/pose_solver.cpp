@@ -1,0 +1,113 @@
+#include "pose_solver/pose_solver.hpp"
+
+#include "pose_solver/gauss_newton_pose.hpp"
+#include "pose_solver/paper_trilateration.hpp"
+
+#include <Eigen/LU>
+
+#include <cmath>
+
+namespace refloc {
+
+PoseSolver::PoseSolver(const SolverConfig& config, const Pose2& robot_T_laser)
+    : config_(config), robot_T_laser_(robot_T_laser) {}
+
+void PoseSolver::solve(const std::vector<ReflectorDetection>& detections, const std::vector<ReflectorMatch>& matches,
+                       PoseSolution& solution) {
+  solution.status = SolveStatus::kLost;
+  solution.reflectors_used = 0;
+  solution.rms_residual = 0.0;
+  solution.iterations = 0;
+  solution.covariance = Eigen::Matrix3d::Identity();
+  solution.used.assign(matches.size(), 0);
+  observations_.clear();
+  observation_match_.clear();
+  // make_observations skips bad indices; keep track of which match each observation is.
+  for (size_t m = 0; m < matches.size(); ++m) {
+    const int d = matches[m].detection_index;
+    if (d >= 0 && d < static_cast<int>(detections.size())) observation_match_.push_back(static_cast<int>(m));
+  }
+  make_observations(detections, matches, config_.detection_min_sigma, observations_);
+  use_.assign(observations_.size(), 1);
+  if (observations_.size() < 3) return;
+  if (config_.mode == SolverMode::kPaper) {
+    solve_paper(solution);
+  } else {
+    solve_default(solution);
+  }
+}
+
+void PoseSolver::solve_paper(PoseSolution& solution) {
+  Eigen::Vector2d map_p_laser;
+  if (!trilaterate_position(observations_, nullptr, config_.min_position_conditioning, map_p_laser)) return;
+  const double laser_heading = paper_mean_heading(observations_, map_p_laser);
+  // The paper's laser axis is the robot's axis; a mount rotation is taken off here.
+  const double robot_heading = wrap_angle(laser_heading - robot_T_laser_.theta);
+  const Eigen::Vector2d map_p_robot = paper_robot_position(map_p_laser, robot_heading, robot_T_laser_);
+  solution.map_T_robot = Pose2{map_p_robot.x(), map_p_robot.y(), robot_heading};
+  // The paper gives no covariance; the linearised one at its solution lets fusion weigh it.
+  const Eigen::FullPivLU<Eigen::Matrix3d> lu(pose_information(observations_, nullptr, solution.map_T_robot, robot_T_laser_));
+  if (lu.isInvertible()) solution.covariance = lu.inverse();
+  finish(solution);
+}
+
+void PoseSolver::solve_default(PoseSolution& solution) {
+  Eigen::Vector2d map_p_laser;
+  if (!trilaterate_position(observations_, nullptr, config_.min_position_conditioning, map_p_laser)) return;
+  const double laser_heading = circular_mean_heading(observations_, nullptr, map_p_laser);
+  const Pose2 map_T_laser{map_p_laser.x(), map_p_laser.y(), laser_heading};
+  Pose2 estimate = map_T_laser * robot_T_laser_.inverse();
+
+  int remaining = static_cast<int>(observations_.size());
+  GaussNewtonResult gn;
+  while (true) {
+    gn = refine_pose(observations_, &use_, robot_T_laser_, estimate, config_.max_iterations, config_.convergence_step);
+    solution.iterations += gn.iterations;
+    if (!gn.converged) return;
+    estimate = gn.map_T_robot;
+    // Drop the worst match while it is an outlier and at least three remain.
+    double worst = 0.0;
+    size_t worst_index = 0;
+    for (size_t i = 0; i < observations_.size(); ++i) {
+      if (!use_[i]) continue;
+      const double r = normalised_residual(observations_[i], estimate, robot_T_laser_);
+      if (r > worst) {
+        worst = r;
+        worst_index = i;
+      }
+    }
+    if (worst <= config_.outlier_threshold || remaining <= 3) break;
+    use_[worst_index] = 0;
+    --remaining;
+  }
+  solution.map_T_robot = gn.map_T_robot;
+  solution.covariance = gn.covariance;
+  finish(solution);
+}
+
+void PoseSolver::finish(PoseSolution& solution) const {
+  double sum2 = 0.0;
+  int used = 0;
+  bool outlier_left = false;
+  for (size_t i = 0; i < observations_.size(); ++i) {
+    if (!use_[i]) continue;
+    ++used;
+    solution.used[static_cast<size_t>(observation_match_[i])] = 1;
+    const Eigen::Vector2d predicted = predict_laser_point(observations_[i], solution.map_T_robot, robot_T_laser_);
+    const double range_error = observations_[i].range - predicted.norm();
+    sum2 += range_error * range_error;
+    outlier_left = outlier_left ||
+                   normalised_residual(observations_[i], solution.map_T_robot, robot_T_laser_) > config_.outlier_threshold;
+  }
+  solution.reflectors_used = used;
+  solution.rms_residual = used > 0 ? std::sqrt(sum2 / used) : 0.0;
+  if (!solution.covariance.allFinite() || used < 3) {
+    solution.status = SolveStatus::kLost;
+  } else if (used < config_.min_reflectors_ok || solution.rms_residual > config_.max_rms_residual_ok || outlier_left) {
+    solution.status = SolveStatus::kDegraded;
+  } else {
+    solution.status = SolveStatus::kOk;
+  }
+}
+
+}  // namespace refloc
