@@ -129,13 +129,15 @@ void ReflectorExtractor::process_cluster_default(const LaserScan& scan, const Be
   CircleFit free_fit;
   const bool have_free = static_cast<int>(beams_.size()) >= config_.roundness.min_beams_for_radius_check &&
                          fit_circle_free_radius(beams_, fit.center, fit.radius, config_.fit, free_fit);
-  switch (check_known_radius_roundness(beams_, fit, have_free ? &free_fit : nullptr, config_.roundness)) {
+  const double flat_chi2 = flat_surface_chi2(beams_, config_.fit.min_incidence_cos);
+  switch (check_known_radius_roundness(beams_, fit, have_free ? &free_fit : nullptr, flat_chi2, config_.roundness)) {
     case RoundnessVerdict::kRound:
       break;
     case RoundnessVerdict::kTooWide:
       ++stats_.rejected_too_wide;
       return;
     case RoundnessVerdict::kResidual:
+    case RoundnessVerdict::kFlat:
       ++stats_.rejected_not_round;
       return;
     case RoundnessVerdict::kRadiusMismatch:

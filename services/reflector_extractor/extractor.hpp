@@ -33,10 +33,10 @@ struct ExtractorConfig {
   KnownRadiusFitConfig fit;
   KnownRadiusRoundnessConfig roundness;
   /// Bearing noise of a beam [rad]: adds (range * angle_sigma)^2 across the line of sight.
-  double angle_sigma = 2e-4;
+  double angle_sigma = 0.002;
   /// An edge beam whose RSSI is below this fraction of the cluster's brightest is a partial
   /// hit (beam straddling the reflector's edge, mixed range): dropped from the fit.
-  double edge_rssi_ratio = 0.8;
+  double edge_rssi_ratio = 0.6;
   /// A neighbour beam closer than the cluster's edge by this much hides part of the
   /// reflector, which would bias the centre sideways [m].
   double occlusion_margin = 0.1;

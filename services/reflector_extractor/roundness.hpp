@@ -23,14 +23,18 @@ struct RoundnessLine {
 };
 
 /// Why a cluster is not taken for a cylinder of the known radius.
-enum class RoundnessVerdict { kRound, kTooWide, kResidual, kRadiusMismatch };
+enum class RoundnessVerdict { kRound, kTooWide, kResidual, kFlat, kRadiusMismatch };
 
 struct KnownRadiusRoundnessConfig {
-  /// Allowed distance between the cluster's outer points beyond the diameter [m]; about
-  /// 3 sigma_r * sqrt(2) so range noise alone never rejects a cylinder.
-  double chord_margin = 0.05;
+  /// Allowed extent of the cluster across the line of sight beyond the diameter [m]. Across
+  /// the line of sight the points' spread is set by the beam angles, not by range noise,
+  /// so the margin can be small; it covers the beam spot making a reflector look wider.
+  double lateral_margin = 0.02;
   /// Largest RMS of the normalised range residuals (chi2 / (n - 2))^0.5 of the known-radius fit.
   double max_rms_residual_sigmas = 2.5;
+  /// A flat surface (tape, metal) must not explain the beams better than the circle by more
+  /// than this much chi2 (a likelihood-ratio test: ~2 sigma).
+  double flat_chi2_margin = 4.0;
   /// The free-radius fit must agree with the known radius within max(radius_tolerance,
   /// radius_sigmas * its own standard deviation).
   double radius_tolerance = 0.03;  ///< [m]
@@ -39,9 +43,17 @@ struct KnownRadiusRoundnessConfig {
 };
 
 /// Verdict for beams whose known-radius fit is known_fit; free_fit may be null (too few
-/// beams or the free fit failed).
+/// beams or the free fit failed); flat_chi2 from flat_surface_chi2, negative to skip that test.
 RoundnessVerdict check_known_radius_roundness(const std::vector<FitBeam>& beams, const CircleFit& known_fit,
-                                              const CircleFit* free_fit, const KnownRadiusRoundnessConfig& config);
+                                              const CircleFit* free_fit, double flat_chi2,
+                                              const KnownRadiusRoundnessConfig& config);
+
+/// chi2 of the beams' range residuals against the best straight line (total least squares),
+/// the hypothesis "flat tape or plate"; 0 for fewer than 3 beams.
+double flat_surface_chi2(const std::vector<FitBeam>& beams, double min_incidence_cos);
+
+/// Extent of the beams' points across the line of sight to center [m].
+double lateral_extent(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center);
 
 /// Mean |range residual| of the beams against a fitted circle [m].
 double mean_abs_range_residual(const std::vector<FitBeam>& beams, const CircleFit& fit, double min_incidence_cos);
