@@ -1,0 +1,84 @@
+// refloc-status --once against a real process publishing HEARTBEAT over udpm
+// (lcm_echo_peer). Runs inside tests/tools/run_in_netns.sh.
+
+#include "tests/tools/child_process.hpp"
+#include "tests/tools/run_command.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace refloc {
+namespace {
+
+const std::string kBin = std::string(REFLOC_BINARY_DIR) + "/bin/";
+const std::string kUrl = "udpm://239.255.76.67:7667?ttl=0";
+
+class RefLocStatusWithPeer : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(peer_.start({kBin + "lcm_echo_peer", "--lcm-url", kUrl}, "/dev/null"));
+  }
+  testing::ChildProcess peer_;
+};
+
+std::string status_command(const std::string& args) {
+  return kBin + "refloc-status --once --wait 2 --lcm-url '" + kUrl + "' " + args;
+}
+
+TEST_F(RefLocStatusWithPeer, ExpectedPeerPresentExitsZero) {
+  const auto r = testing::run_command(status_command("--expect lcm_echo_peer"));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("lcm_echo_peer"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("all 1 expected services alive"), std::string::npos) << r.output;
+}
+
+TEST_F(RefLocStatusWithPeer, MissingServiceExitsOne) {
+  const auto r = testing::run_command(status_command("--expect lcm_echo_peer,missing_service"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("MISSING or stale: missing_service"), std::string::npos) << r.output;
+}
+
+TEST_F(RefLocStatusWithPeer, JsonReportsPeerPidStateAndRates) {
+  const auto r = testing::run_command(status_command("--expect lcm_echo_peer --json"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto doc = nlohmann::json::parse(r.output);
+  ASSERT_EQ(doc["services"].size(), 1u);
+  const auto& peer = doc["services"][0];
+  EXPECT_EQ(peer["service"], "lcm_echo_peer");
+  EXPECT_EQ(peer["pid"].get<int>(), peer_.pid());
+  EXPECT_EQ(peer["state"], "OK");
+  EXPECT_LT(peer["age_s"].get<double>(), 1.0);  // the peer beats every 0.2 s
+  EXPECT_DOUBLE_EQ(peer["rate_in_hz"].get<double>(), 0.0);  // nobody sends it data
+}
+
+TEST(RefLocStatus, StoppedServiceTurnsStaleAndExitsOne) {
+  testing::ChildProcess peer({kBin + "lcm_echo_peer", "--lcm-url", kUrl}, "/dev/null");
+  // Listen 5 s; the peer dies after 1 s, so its last heartbeat is > 3 s old at the end.
+  const std::string cmd = kBin + "refloc-status --once --wait 5 --json --expect lcm_echo_peer --lcm-url '" + kUrl + "'";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  peer.stop();
+  std::string output;
+  char buffer[4096];
+  size_t n = 0;
+  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) output.append(buffer, n);
+  const int status = pclose(pipe);
+  EXPECT_EQ(WEXITSTATUS(status), 1) << output;
+  const auto doc = nlohmann::json::parse(output);
+  EXPECT_EQ(doc["missing"], nlohmann::json::array({"lcm_echo_peer"}));
+  EXPECT_TRUE(doc["services"][0]["stale"].get<bool>());
+  EXPECT_EQ(doc["services"][0]["state"], "STOPPING");  // its last word before exiting
+}
+
+TEST(RefLocStatus, NothingOnTheBusMeansEveryExpectedServiceMissing) {
+  const auto r = testing::run_command(kBin + "refloc-status --once --wait 0.5 --lcm-url '" + kUrl + "'");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("lms100_driver"), std::string::npos);
+  EXPECT_NE(r.output.find("robot_sim"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace refloc

@@ -1,0 +1,129 @@
+// refloc-status: listen to HEARTBEAT and show every service's state, message
+// rates, processing time, errors and heartbeat age; exit 1 when an expected
+// service is missing or its heartbeat is older than --max-age.
+
+#include "common/clock.hpp"
+#include "common/guarded_main.hpp"
+#include "common/service_runtime.hpp"
+#include "heartbeat_table.hpp"
+#include "status_report.hpp"
+
+#include <CLI/CLI.hpp>
+#include <lcm/lcm-cpp.hpp>
+#include <refloc/heartbeat_t.hpp>
+
+#include <csignal>
+#include <cstdio>
+#include <memory>
+
+namespace refloc {
+namespace {
+
+// Signal handlers can only reach static storage; this is the one flag they set.
+volatile std::sig_atomic_t g_stop = 0;
+void on_signal(int) { g_stop = 1; }
+
+double monotonic_s() { return static_cast<double>(monotonic_us()) * 1e-6; }
+
+HeartbeatSample to_sample(const heartbeat_t& m) {
+  HeartbeatSample s;
+  s.service = m.service;
+  s.pid = m.pid;
+  s.state = m.state;
+  s.state_detail = m.state_detail;
+  s.utime = m.utime;
+  s.uptime_us = m.uptime_us;
+  s.messages_in = m.messages_in;
+  s.messages_out = m.messages_out;
+  s.decode_errors = m.decode_errors;
+  s.processing_p50_us = m.processing_p50_us;
+  s.processing_p99_us = m.processing_p99_us;
+  const size_t n = std::min(m.counter_names.size(), m.counter_values.size());
+  for (size_t i = 0; i < n; ++i) s.counters.emplace_back(m.counter_names[i], m.counter_values[i]);
+  return s;
+}
+
+struct Listener {
+  HeartbeatTable table;
+  int64_t decode_errors = 0;
+
+  static void on_heartbeat(const lcm::ReceiveBuffer* rbuf, const std::string&, Listener* self) {
+    heartbeat_t m;
+    if (m.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) < 0) {
+      ++self->decode_errors;
+      return;
+    }
+    self->table.update(to_sample(m), monotonic_s());
+  }
+};
+
+void print(const Listener& listener, const std::vector<std::string>& expected, bool json, bool clear_screen) {
+  const auto rows = listener.table.rows(expected, monotonic_s());
+  if (json) {
+    auto doc = status_to_json(rows);
+    doc["heartbeat_decode_errors"] = listener.decode_errors;
+    std::printf("%s\n", doc.dump().c_str());
+  } else {
+    if (clear_screen) std::printf("\033[H\033[2J");
+    std::printf("%s", format_status_table(rows).c_str());
+    if (listener.decode_errors > 0) {
+      std::printf("%lld HEARTBEAT messages could not be decoded (other heartbeat_t version?)\n",
+                  static_cast<long long>(listener.decode_errors));
+    }
+  }
+  std::fflush(stdout);
+}
+
+int run(const std::string& lcm_url, const std::vector<std::string>& expected, bool once, double wait_s,
+        double max_age_s, bool json) {
+  const std::string url = resolve_lcm_url(lcm_url);
+  auto lcm = std::make_unique<lcm::LCM>(url);
+  if (!lcm->good()) throw std::runtime_error("cannot open LCM at '" + url + "' (is there a multicast route?)");
+  Listener listener{HeartbeatTable(max_age_s), 0};
+  lcm->subscribeFunction("HEARTBEAT", &Listener::on_heartbeat, &listener);
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+
+  const double start_s = monotonic_s();
+  double next_print_s = once ? start_s + wait_s : start_s + 1.0;
+  while (g_stop == 0) {
+    const double now_s = monotonic_s();
+    if (now_s >= next_print_s) {
+      print(listener, expected, json, !once && !json);
+      if (once) break;
+      next_print_s += 1.0;
+      if (next_print_s < now_s) next_print_s = now_s + 1.0;
+    }
+    const int timeout_ms = static_cast<int>(std::clamp((next_print_s - monotonic_s()) * 1000.0, 0.0, 100.0)) + 1;
+    lcm->handleTimeout(timeout_ms);
+  }
+  return status_exit_code(listener.table.rows(expected, monotonic_s()));
+}
+
+}  // namespace
+}  // namespace refloc
+
+int main(int argc, char** argv) {
+  CLI::App app{"Live table of every refloc service from HEARTBEAT; exit 1 when an expected service is missing"};
+  std::string lcm_url;
+  std::vector<std::string> expected{"lms100_driver", "reflector_extractor", "reflector_matcher", "pose_solver",
+                                    "mecanum_odometry", "pose_fusion", "navigator", "robot_sim"};
+  bool once = false;
+  bool json = false;
+  double wait_s = 3.0;
+  double max_age_s = 3.0;
+  app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
+  app.add_option("--expect", expected, "services that must be present, comma separated")
+      ->delimiter(',')
+      ->capture_default_str();
+  app.add_flag("--once", once, "listen for --wait seconds, print once and exit");
+  app.add_option("--wait", wait_s, "seconds to listen with --once [s]")->check(CLI::Range(0.1, 3600.0))->capture_default_str();
+  app.add_option("--max-age", max_age_s, "a heartbeat older than this counts as missing [s]")
+      ->check(CLI::Range(0.1, 3600.0))
+      ->capture_default_str();
+  app.add_flag("--json", json, "print JSON (one document per refresh) instead of the table");
+  CLI11_PARSE(app, argc, argv);
+  return refloc::guarded_main("refloc-status", [&] {
+    return refloc::run(lcm_url, expected, once, wait_s, max_age_s, json);
+  });
+}
