@@ -1,0 +1,26 @@
+#pragma once
+// mecanum_odometry's config file (deploy/config/mecanum_odometry.json). Every
+// key is optional with the default of the struct it fills.
+
+#include "mecanum_odometry/mecanum_odometry.hpp"
+
+#include <string>
+
+namespace refloc {
+
+class JsonConfig;
+
+struct OdometryServiceConfig {
+  OdometryConfig odometry;
+  double slip_warning = 0.05;  ///< slip indicator counted as a slip event above this [m/s]
+  std::string input_channel = "WHEEL_ENCODERS";
+  std::string output_channel = "ODOMETRY";
+};
+
+/// Odometry noise coefficients from the object at pointer (keys *_m2_per_m, ...).
+OdometryNoise parse_odometry_noise(const JsonConfig& config, const std::string& pointer);
+
+/// The whole file; call config.reject_unknown_keys() afterwards.
+OdometryServiceConfig parse_odometry_service_config(const JsonConfig& config);
+
+}  // namespace refloc

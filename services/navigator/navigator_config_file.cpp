@@ -1,0 +1,50 @@
+#include "navigator/navigator_config_file.hpp"
+
+#include "common/json_config.hpp"
+
+#include <cmath>
+
+namespace refloc {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+}  // namespace
+
+NavigatorServiceConfig parse_navigator_service_config(const JsonConfig& config) {
+  NavigatorServiceConfig c;
+  NavigatorConfig& n = c.navigator;
+  ProfileLimits& t = n.translation;
+  t.max_speed = config.number("/max_speed_m_s", t.max_speed, 0.001, 5.0);
+  t.max_accel = config.number("/max_accel_m_s2", t.max_accel, 0.001, 20.0);
+  t.brake_fraction = config.number("/brake_fraction", t.brake_fraction, 0.1, 1.0);
+  t.creep_distance = config.number("/creep_distance_m", t.creep_distance, 0.0, 1.0);
+  t.creep_speed = config.number("/creep_speed_m_s", t.creep_speed, 0.0001, 1.0);
+  t.gain = config.number("/final_approach_gain_per_s", t.gain, 0.01, 20.0);
+  ProfileLimits& r = n.rotation;
+  r.max_speed = config.number("/max_yaw_rate_rad_s", r.max_speed, 0.001, 10.0);
+  r.max_accel = config.number("/max_yaw_accel_rad_s2", r.max_accel, 0.001, 50.0);
+  r.brake_fraction = t.brake_fraction;
+  r.creep_distance = config.number("/creep_angle_deg", r.creep_distance / kDeg, 0.0, 90.0) * kDeg;
+  r.creep_speed = config.number("/creep_yaw_rate_rad_s", r.creep_speed, 0.0001, 1.0);
+  r.gain = t.gain;
+  n.pose_timeout = config.number("/pose_timeout_s", n.pose_timeout, 0.01, 5.0);
+  n.settle_time = config.number("/settle_time_s", n.settle_time, 0.0, 10.0);
+  n.progress_timeout = config.number("/progress_timeout_s", n.progress_timeout, 1.0, 3600.0);
+  n.default_xy_tolerance = config.number("/default_xy_tolerance_m", n.default_xy_tolerance, 0.0001, 1.0);
+  n.default_heading_tolerance =
+      config.number("/default_heading_tolerance_deg", n.default_heading_tolerance / kDeg, 0.001, 45.0) * kDeg;
+  n.drive_on_degraded_pose = config.boolean("/drive_on_degraded_pose", n.drive_on_degraded_pose);
+  c.control_rate = config.number("/control_rate_hz", c.control_rate, 1.0, 1000.0);
+  c.status_rate = config.number("/status_rate_hz", c.status_rate, 0.1, 100.0);
+  c.goal_channel = config.string("/goal_channel", c.goal_channel);
+  c.pose_channel = config.string("/pose_channel", c.pose_channel);
+  c.command_channel = config.string("/command_channel", c.command_channel);
+  c.status_channel = config.string("/status_channel", c.status_channel);
+  for (const char* key : {"/goal_channel", "/pose_channel", "/command_channel", "/status_channel"}) {
+    if (config.string(key, "x").empty()) config.fail(key, "expected a channel name, got \"\"");
+  }
+  return c;
+}
+
+}  // namespace refloc

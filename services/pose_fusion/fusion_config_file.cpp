@@ -1,0 +1,27 @@
+#include "pose_fusion/fusion_config_file.hpp"
+
+#include "common/json_config.hpp"
+#include "mecanum_odometry/odometry_config_file.hpp"
+
+namespace refloc {
+
+FusionServiceConfig parse_fusion_service_config(const JsonConfig& config) {
+  FusionServiceConfig c;
+  FusionConfig& f = c.fusion;
+  f.history = config.number("/history_s", f.history, 0.05, 10.0);
+  f.gate_chi2 = config.number("/gate_chi2", f.gate_chi2, 0.1, 1e6);
+  f.degraded_after = config.number("/degraded_after_s", f.degraded_after, 0.01, 60.0);
+  f.lost_after = config.number("/lost_after_s", f.lost_after, f.degraded_after, 600.0);
+  f.max_consecutive_rejections = static_cast<int>(
+      config.integer("/max_consecutive_rejections", f.max_consecutive_rejections, 1, 100000));
+  c.odometry_noise = parse_odometry_noise(config, "/odometry_noise");
+  c.odometry_channel = config.string("/odometry_channel", c.odometry_channel);
+  c.fix_channel = config.string("/fix_channel", c.fix_channel);
+  c.output_channel = config.string("/output_channel", c.output_channel);
+  for (const char* key : {"/odometry_channel", "/fix_channel", "/output_channel"}) {
+    if (config.string(key, "x").empty()) config.fail(key, "expected a channel name, got \"\"");
+  }
+  return c;
+}
+
+}  // namespace refloc

@@ -1,0 +1,26 @@
+#pragma once
+// pose_fusion's config file (deploy/config/pose_fusion.json). Every key is
+// optional with the default of the struct it fills.
+
+#include "mecanum_odometry/odometry_covariance.hpp"
+#include "pose_fusion/pose_fusion.hpp"
+
+#include <string>
+
+namespace refloc {
+
+class JsonConfig;
+
+struct FusionServiceConfig {
+  FusionConfig fusion;
+  /// Covariance of each odometry increment, as mecanum_odometry models it.
+  OdometryNoise odometry_noise;
+  std::string odometry_channel = "ODOMETRY";
+  std::string fix_channel = "LASER_POSE";
+  std::string output_channel = "POSE";
+};
+
+/// The whole file; call config.reject_unknown_keys() afterwards.
+FusionServiceConfig parse_fusion_service_config(const JsonConfig& config);
+
+}  // namespace refloc

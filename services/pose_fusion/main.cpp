@@ -1,0 +1,146 @@
+// pose_fusion: ODOMETRY (odometry_t) + LASER_POSE (pose2d_t) -> POSE (pose2d_t),
+// one output per odometry message.
+
+#include "common/guarded_main.hpp"
+#include "common/json_config.hpp"
+#include "common/service_runtime.hpp"
+#include "pose_fusion/fusion_config_file.hpp"
+#include "pose_fusion/pose_fusion.hpp"
+
+#include <CLI/CLI.hpp>
+#include <refloc/odometry_t.hpp>
+#include <refloc/pose2d_t.hpp>
+
+#include <cmath>
+#include <optional>
+
+namespace refloc {
+namespace {
+
+int8_t to_status(FusionStatus s) {
+  switch (s) {
+    case FusionStatus::kInitializing: return pose2d_t::STATUS_INITIALIZING;
+    case FusionStatus::kOk: return pose2d_t::STATUS_OK;
+    case FusionStatus::kDegraded: return pose2d_t::STATUS_DEGRADED;
+    case FusionStatus::kLost: return pose2d_t::STATUS_LOST;
+  }
+  return pose2d_t::STATUS_LOST;
+}
+
+/// A fix the filter can use, or nothing (status unusable, covariance not positive).
+std::optional<PoseFix> to_fix(const pose2d_t& msg) {
+  PoseFix fix;
+  if (msg.status == pose2d_t::STATUS_OK) {
+    fix.quality = FixQuality::kGood;
+  } else if (msg.status == pose2d_t::STATUS_DEGRADED) {
+    fix.quality = FixQuality::kUsable;
+  } else {
+    return std::nullopt;
+  }
+  fix.utime = msg.utime;
+  fix.map_T_robot = {msg.x, msg.y, msg.theta};
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) fix.covariance(r, c) = msg.covariance[3 * r + c];
+  }
+  if (!std::isfinite(msg.x) || !std::isfinite(msg.y) || !std::isfinite(msg.theta) ||
+      !fix.covariance.allFinite() || fix.covariance.diagonal().minCoeff() <= 0.0) {
+    return std::nullopt;
+  }
+  return fix;
+}
+
+int run(const std::string& lcm_url, const std::string& config_path) {
+  FusionServiceConfig config;
+  if (!config_path.empty()) {
+    const JsonConfig file = JsonConfig::load_file(config_path);
+    config = parse_fusion_service_config(file);
+    file.reject_unknown_keys();
+  }
+  ServiceRuntime runtime("pose_fusion", lcm_url);
+  PoseFusion fusion(config.fusion);
+  std::optional<odometry_t> previous;
+  int32_t reflectors_used = 0;
+  FusionStatus published_status = FusionStatus::kInitializing;
+
+  runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
+    // A restarted odometry service starts a new odom frame: take the next step from there.
+    if (previous && (msg.utime <= previous->utime || msg.distance < previous->distance)) {
+      ++runtime.counter("odometry_restarts");
+      previous.reset();
+    }
+    if (previous) {
+      const Pose2 before{previous->x, previous->y, previous->theta};
+      const Pose2 delta = before.inverse() * Pose2{msg.x, msg.y, msg.theta};
+      fusion.add_odometry(msg.utime, delta, increment_covariance(delta, config.odometry_noise));
+    }
+    previous = msg;
+    const FusionStatus status = fusion.status(msg.utime);
+    if (status != published_status) {
+      spdlog::info("status {} -> {}", to_string(published_status), to_string(status));
+      published_status = status;
+    }
+    pose2d_t out{};
+    out.utime = msg.utime;
+    const PoseEstimate& e = fusion.estimate();
+    out.x = e.map_T_robot.x;
+    out.y = e.map_T_robot.y;
+    out.theta = e.map_T_robot.theta;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) out.covariance[3 * r + c] = e.covariance(r, c);
+    }
+    out.status = to_status(status);
+    out.reflectors_used = reflectors_used;
+    out.residual = 0.0;
+    runtime.publish(config.output_channel, out);
+    runtime.set_state(status == FusionStatus::kOk ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED,
+                      status == FusionStatus::kOk ? "" : to_string(status));
+  });
+
+  runtime.subscribe<pose2d_t>(config.fix_channel, [&](const pose2d_t& msg) {
+    const std::optional<PoseFix> fix = to_fix(msg);
+    if (!fix) {
+      ++runtime.counter("fixes_unusable");
+      return;
+    }
+    switch (fusion.add_fix(*fix)) {
+      case FixResult::kAccepted:
+        ++runtime.counter("fixes_accepted");
+        reflectors_used = msg.reflectors_used;
+        break;
+      case FixResult::kInitialised:
+        ++runtime.counter("initialisations");
+        reflectors_used = msg.reflectors_used;
+        spdlog::info("initialised from the fix at utime {}: ({:.3f}, {:.3f}, {:.4f})", msg.utime, msg.x,
+                     msg.y, msg.theta);
+        break;
+      case FixResult::kRejectedGate:
+        ++runtime.counter("fixes_rejected_gate");
+        spdlog::debug("fix rejected, Mahalanobis^2 {:.1f}", fusion.last_mahalanobis_squared());
+        break;
+      case FixResult::kTooOld:
+        ++runtime.counter("fixes_too_old");
+        break;
+      case FixResult::kWaitingForGood:
+        ++runtime.counter("fixes_not_good_enough_to_start");
+        break;
+    }
+  });
+  return runtime.run();
+}
+
+}  // namespace
+}  // namespace refloc
+
+int main(int argc, char** argv) {
+  CLI::App app{"EKF fusion of wheel odometry and delayed laser pose fixes: ODOMETRY + LASER_POSE -> POSE"};
+  std::string lcm_url, config_path;
+  bool verbose = false;
+  app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
+  app.add_option("--config", config_path, "service config file (JSON); defaults when omitted");
+  app.add_flag("-v,--verbose", verbose, "debug log lines");
+  CLI11_PARSE(app, argc, argv);
+  return refloc::guarded_main("pose_fusion", [&] {
+    refloc::setup_logging("pose_fusion", verbose);
+    return refloc::run(lcm_url, config_path);
+  });
+}
