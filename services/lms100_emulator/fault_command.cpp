@@ -1,0 +1,94 @@
+#include "lms100_emulator/fault_command.hpp"
+
+#include "lms100_emulator/emulator_config_loader.hpp"
+
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace refloc {
+
+namespace {
+
+bool parse_count(const std::string& word, int max_value, int& value) {
+  try {
+    size_t used = 0;
+    value = std::stoi(word, &used);
+    return used == word.size() && value >= 0 && value <= max_value;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+bool parse_on_off(const std::string& word, bool& value) {
+  if (word != "on" && word != "off") return false;
+  value = word == "on";
+  return true;
+}
+
+std::string describe(const FaultSettings& s) {
+  std::ostringstream out;
+  const char* split = s.split_mode == WriteSplitMode::none     ? "none"
+                      : s.split_mode == WriteSplitMode::random ? "random"
+                                                               : "boundaries";
+  out << "split " << split << ", merge " << s.merge_scan_telegrams << ", junk " << s.junk_bytes_between_telegrams
+      << ", duplicate " << (s.duplicate_replies ? "on" : "off") << ", ready "
+      << (s.refuse_readiness ? "off" : "on");
+  return out.str();
+}
+
+}  // namespace
+
+bool apply_fault_command(const std::string& line, FaultInjector& faults, std::string& message) {
+  std::istringstream in(line);
+  std::vector<std::string> words;
+  for (std::string w; in >> w;) words.push_back(w);
+  const std::string command = words.empty() ? "" : words[0];
+  const std::string arg = words.size() == 2 ? words[1] : "";
+  const bool no_arg = words.size() == 1;
+  const bool one_arg = words.size() == 2;
+
+  FaultSettings settings = faults.settings();
+  int n = 0;
+  bool flag = false;
+  bool ok = true;
+  if (command == "drop" && one_arg && parse_count(arg, 100000, n)) {
+    faults.drop_next_scans(n);
+  } else if (command == "stall" && one_arg && parse_count(arg, 600000, n)) {
+    faults.stall_for_ms(n);
+  } else if (command == "close" && no_arg) {
+    faults.close_connection_now();
+  } else if (command == "reset" && no_arg) {
+    faults.reset_mid_telegram();
+  } else if (command == "refuse-write" && no_arg) {
+    faults.refuse_next_write();
+  } else if (command == "ready" && one_arg && parse_on_off(arg, flag)) {
+    settings.refuse_readiness = !flag;
+    faults.set_settings(settings);
+  } else if (command == "split" && one_arg && (arg == "none" || arg == "random" || arg == "boundaries")) {
+    settings.split_mode = parse_split_mode(arg);
+    faults.set_settings(settings);
+  } else if (command == "merge" && one_arg && parse_count(arg, 50, n) && n >= 1) {
+    settings.merge_scan_telegrams = n;
+    faults.set_settings(settings);
+  } else if (command == "junk" && one_arg && parse_count(arg, 10000, n)) {
+    settings.junk_bytes_between_telegrams = n;
+    faults.set_settings(settings);
+  } else if (command == "duplicate" && one_arg && parse_on_off(arg, flag)) {
+    settings.duplicate_replies = flag;
+    faults.set_settings(settings);
+  } else if (command == "status" && no_arg) {
+  } else {
+    ok = false;
+  }
+  if (!ok) {
+    message = "unknown or malformed command '" + line +
+              "' (drop N | stall MS | close | reset | refuse-write | ready on|off | split none|random|boundaries"
+              " | merge N | junk N | duplicate on|off | status)";
+    return false;
+  }
+  message = "ok: " + describe(faults.settings());
+  return true;
+}
+
+}  // namespace refloc
