@@ -136,6 +136,9 @@ void ReflectorExtractor::process_cluster_default(const LaserScan& scan, const Be
     case RoundnessVerdict::kTooWide:
       ++stats_.rejected_too_wide;
       return;
+    case RoundnessVerdict::kTooNarrow:
+      ++stats_.rejected_too_narrow;
+      return;
     case RoundnessVerdict::kResidual:
     case RoundnessVerdict::kFlat:
       ++stats_.rejected_not_round;

@@ -53,12 +53,13 @@ struct ExtractionStats {
   int clusters_considered = 0;  ///< high-energy clusters
   int rejected_too_few_beams = 0;
   int rejected_too_wide = 0;
+  int rejected_too_narrow = 0;  ///< bright patch far narrower than the diameter up close
   int rejected_not_round = 0;   ///< residual or d-bar test
   int rejected_radius = 0;      ///< free-fit radius far from the known radius
   int rejected_occluded = 0;    ///< occluded or next to a dazzled beam
   int rejected_fit_failed = 0;
   int rejected() const {
-    return rejected_too_few_beams + rejected_too_wide + rejected_not_round + rejected_radius +
+    return rejected_too_few_beams + rejected_too_wide + rejected_too_narrow + rejected_not_round + rejected_radius +
            rejected_occluded + rejected_fit_failed;
   }
 };

@@ -24,8 +24,16 @@ RoundnessVerdict check_known_radius_roundness(const std::vector<FitBeam>& beams,
                                               const CircleFit* free_fit, double flat_chi2,
                                               const KnownRadiusRoundnessConfig& config) {
   const size_t n = beams.size();
-  if (lateral_extent(beams, known_fit.center) > 2.0 * known_fit.radius + config.lateral_margin) {
-    return RoundnessVerdict::kTooWide;
+  const double extent = lateral_extent(beams, known_fit.center);
+  if (extent > 2.0 * known_fit.radius + config.lateral_margin) return RoundnessVerdict::kTooWide;
+  if (n >= 2) {
+    const Eigen::Vector2d& u0 = beams[0].direction;
+    const Eigen::Vector2d& u1 = beams[1].direction;
+    const double step = std::abs(std::atan2(u0.x() * u1.y() - u0.y() * u1.x(), u0.dot(u1)));
+    const double beam_step_width = step * known_fit.center.norm();
+    if (extent + beam_step_width < config.min_lateral_fraction * 2.0 * known_fit.radius) {
+      return RoundnessVerdict::kTooNarrow;
+    }
   }
   if (n > 2) {
     const double rms = std::sqrt(known_fit.chi2 / static_cast<double>(n - 2));

@@ -23,13 +23,17 @@ struct RoundnessLine {
 };
 
 /// Why a cluster is not taken for a cylinder of the known radius.
-enum class RoundnessVerdict { kRound, kTooWide, kResidual, kFlat, kRadiusMismatch };
+enum class RoundnessVerdict { kRound, kTooWide, kTooNarrow, kResidual, kFlat, kRadiusMismatch };
 
 struct KnownRadiusRoundnessConfig {
   /// Allowed extent of the cluster across the line of sight beyond the diameter [m]. Across
   /// the line of sight the points' spread is set by the beam angles, not by range noise,
   /// so the margin can be small; it covers the beam spot making a reflector look wider.
   double lateral_margin = 0.02;
+  /// Retro-reflective film stays bright far towards the silhouette, so up close a cylinder
+  /// lights up most of its diameter; a bright patch narrower than this fraction of the
+  /// diameter (plus one beam step) is a specular glint on metal or a narrow strip.
+  double min_lateral_fraction = 0.5;
   /// Largest RMS of the normalised range residuals (chi2 / (n - 2))^0.5 of the known-radius fit.
   double max_rms_residual_sigmas = 2.5;
   /// A flat surface (tape, metal) must not explain the beams better than the circle by more
