@@ -1,0 +1,133 @@
+#include "log_report.hpp"
+
+#include <fmt/format.h>
+
+#include <ctime>
+
+namespace refloc {
+namespace {
+
+std::string iso_utc(int64_t utime) {
+  const std::time_t seconds = static_cast<std::time_t>(utime / 1'000'000);
+  std::tm tm{};
+  gmtime_r(&seconds, &tm);
+  char text[32];
+  std::strftime(text, sizeof(text), "%Y-%m-%dT%H:%M:%S", &tm);
+  return fmt::format("{}.{:03d}Z", text, static_cast<int>((utime % 1'000'000) / 1000));
+}
+
+std::string stats_line(const std::string& name, const LatencyStats& s) {
+  if (s.count == 0) return fmt::format("  {:<40} {:>7} {:>9} {:>9} {:>9} {:>9}\n", name, 0, "-", "-", "-", "-");
+  return fmt::format("  {:<40} {:>7} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f}\n", name, s.count, s.p50_ms, s.p99_ms,
+                     s.mean_ms, s.max_ms);
+}
+
+nlohmann::ordered_json stats_json(const LatencyStats& s) {
+  return {{"count", s.count}, {"p50_ms", s.p50_ms}, {"p99_ms", s.p99_ms}, {"mean_ms", s.mean_ms}, {"max_ms", s.max_ms}};
+}
+
+}  // namespace
+
+std::string format_log_summary(const LogSummary& summary) {
+  std::string out;
+  if (summary.events == 0) return "empty log: no events\n";
+  out += fmt::format("{} events on {} channels over {:.3f} s ({} .. {})\n", summary.events, summary.channels.size(),
+                     summary.duration_s, iso_utc(summary.first_utime), iso_utc(summary.last_utime));
+  out += fmt::format("largest gap on all channels: {:.3f} s at {:.3f} s\n", summary.largest_gap_s,
+                     summary.largest_gap_at_s);
+  out += fmt::format("{:<22} {:<24} {:>8} {:>9} {:>11} {:>10} {:>10}\n", "CHANNEL", "TYPE", "COUNT", "RATE[Hz]",
+                     "BYTES", "MAXGAP[s]", "AT[s]");
+  for (const auto& c : summary.channels) {
+    out += fmt::format("{:<22} {:<24} {:>8} {:>9.2f} {:>11} {:>10.3f} {:>10.3f}\n", c.channel, c.type, c.count,
+                       c.rate_hz, c.bytes, c.largest_gap_s, c.largest_gap_at_s);
+  }
+  out += fmt::format("gaps longer than {:.3f} s: {}\n", summary.gap_threshold_s,
+                     summary.gaps.size() + summary.gaps_not_listed);
+  for (const auto& g : summary.gaps) {
+    out += fmt::format("  {:<22} at {:>10.3f} s  for {:>8.3f} s  (ended by event {})\n", g.channel, g.start_s,
+                       g.length_s, g.end_event);
+  }
+  if (summary.gaps_not_listed > 0) out += fmt::format("  ... and {} more\n", summary.gaps_not_listed);
+  return out;
+}
+
+nlohmann::ordered_json log_summary_to_json(const LogSummary& summary) {
+  nlohmann::ordered_json channels = nlohmann::ordered_json::array();
+  for (const auto& c : summary.channels) {
+    channels.push_back({{"channel", c.channel},
+                        {"type", c.type},
+                        {"count", c.count},
+                        {"bytes", c.bytes},
+                        {"rate_hz", c.rate_hz},
+                        {"first_utime", c.first_utime},
+                        {"last_utime", c.last_utime},
+                        {"largest_gap_s", c.largest_gap_s},
+                        {"largest_gap_at_s", c.largest_gap_at_s},
+                        {"largest_gap_event", c.largest_gap_event}});
+  }
+  nlohmann::ordered_json gaps = nlohmann::ordered_json::array();
+  for (const auto& g : summary.gaps) {
+    gaps.push_back({{"channel", g.channel}, {"start_s", g.start_s}, {"length_s", g.length_s}, {"end_event", g.end_event}});
+  }
+  return {{"events", summary.events},
+          {"first_utime", summary.first_utime},
+          {"last_utime", summary.last_utime},
+          {"duration_s", summary.duration_s},
+          {"largest_gap_s", summary.largest_gap_s},
+          {"largest_gap_at_s", summary.largest_gap_at_s},
+          {"gap_threshold_s", summary.gap_threshold_s},
+          {"channels", std::move(channels)},
+          {"gaps", std::move(gaps)},
+          {"gaps_not_listed", summary.gaps_not_listed}};
+}
+
+std::string format_latency_report(const LatencyReport& report) {
+  std::string out = "scan-to-pose latency from log receive times [ms]\n";
+  out += fmt::format("  {:<40} {:>7} {:>9} {:>9} {:>9} {:>9}\n", "STAGE", "SCANS", "P50", "P99", "MEAN", "MAX");
+  for (size_t i = 0; i < report.stages.size(); ++i) {
+    out += stats_line(report.channels[i] + " -> " + report.channels[i + 1], report.stages[i]);
+  }
+  if (!report.channels.empty()) {
+    out += stats_line(report.channels.front() + " -> " + report.channels.back() + " (total)", report.end_to_end);
+  }
+  out += "  scans seen per channel:";
+  for (size_t i = 0; i < report.channels.size(); ++i) {
+    out += fmt::format(" {}={}", report.channels[i], report.reached[i]);
+  }
+  out += "\n";
+  if (!report.processing.empty()) {
+    out += "handler time per service from its last HEARTBEAT [us]\n";
+    out += fmt::format("  {:<24} {:>9} {:>9} {:>10} {:>10}\n", "SERVICE", "P50", "P99", "IN", "OUT");
+    for (const auto& p : report.processing) {
+      out += fmt::format("  {:<24} {:>9.0f} {:>9.0f} {:>10} {:>10}\n", p.service, p.p50_us, p.p99_us, p.messages_in,
+                         p.messages_out);
+    }
+  }
+  return out;
+}
+
+nlohmann::ordered_json latency_report_to_json(const LatencyReport& report) {
+  nlohmann::ordered_json stages = nlohmann::ordered_json::array();
+  for (size_t i = 0; i < report.stages.size(); ++i) {
+    auto s = stats_json(report.stages[i]);
+    s["from"] = report.channels[i];
+    s["to"] = report.channels[i + 1];
+    stages.push_back(std::move(s));
+  }
+  nlohmann::ordered_json reached = nlohmann::ordered_json::object();
+  for (size_t i = 0; i < report.channels.size(); ++i) reached[report.channels[i]] = report.reached[i];
+  nlohmann::ordered_json processing = nlohmann::ordered_json::array();
+  for (const auto& p : report.processing) {
+    processing.push_back({{"service", p.service},
+                          {"processing_p50_us", p.p50_us},
+                          {"processing_p99_us", p.p99_us},
+                          {"messages_in", p.messages_in},
+                          {"messages_out", p.messages_out}});
+  }
+  return {{"end_to_end", stats_json(report.end_to_end)},
+          {"stages", std::move(stages)},
+          {"scans_per_channel", std::move(reached)},
+          {"heartbeat_processing", std::move(processing)}};
+}
+
+}  // namespace refloc

@@ -1,0 +1,22 @@
+#pragma once
+// Text and JSON output of refloc-log: the channel summary with gaps, and the
+// pipeline latency report.
+
+#include "log_statistics.hpp"
+#include "pipeline_latency.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace refloc {
+
+/// Channel table (count, rate, bytes, largest gap and where) and the listed gaps.
+std::string format_log_summary(const LogSummary& summary);
+nlohmann::ordered_json log_summary_to_json(const LogSummary& summary);
+
+/// Per-stage and end-to-end p50/p99/max, scans reaching each stage, HEARTBEAT processing.
+std::string format_latency_report(const LatencyReport& report);
+nlohmann::ordered_json latency_report_to_json(const LatencyReport& report);
+
+}  // namespace refloc
