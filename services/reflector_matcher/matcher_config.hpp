@@ -26,7 +26,6 @@ struct MatcherConfig {
   double prior_min_sigma_xy = 0.05;                    ///< floor of the prior's std dev [m]
   double prior_min_sigma_theta = 1.0 * M_PI / 180.0;   ///< floor of the prior's std dev [rad]
   double tracking_gate_chi2 = 13.8;                    ///< Mahalanobis^2 gate, 2 dof 99.9 %
-  double tracking_refit_gate = 0.15;                   ///< [m] after refitting the pose to the first matches
   double detection_min_sigma = 0.005;                  ///< floor of a detection's std dev [m]
 
   // Global relocalization.

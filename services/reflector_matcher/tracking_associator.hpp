@@ -3,8 +3,9 @@
 // into the laser frame and paired with the nearest detection inside a
 // Mahalanobis gate that adds the prior's uncertainty (grown with range through
 // the heading) to the detection's covariance; pairs are unique. The pose is then
-// refitted to those pairs and the association repeated with a tight gate, so a
-// prior 0.2 m / 3 deg off still gives the right pairs at 20 m.
+// refitted to those pairs and the association repeated with the verifier's
+// coarse-then-fine Euclidean gates, so a prior 0.2 m / 3 deg off still gives
+// the right pairs at 20 m.
 
 #include "reflector_matcher/hypothesis_verifier.hpp"
 #include "reflector_matcher/map_grid.hpp"

@@ -1,0 +1,113 @@
+// pose_solver: REFLECTOR_MATCHES (reflector_matches_t) -> LASER_POSE (pose2d_t,
+// map_T_robot at the scan's reference time), one output per scan.
+
+#include "pose_solver/pose_solver.hpp"
+#include "pose_solver/solver_config_file.hpp"
+
+#include "common/guarded_main.hpp"
+#include "common/json_config.hpp"
+#include "common/robot_config.hpp"
+#include "common/service_runtime.hpp"
+
+#include <CLI/CLI.hpp>
+#include <refloc/pose2d_t.hpp>
+#include <refloc/reflector_matches_t.hpp>
+
+namespace refloc {
+namespace {
+
+int8_t to_message_status(SolveStatus s) {
+  switch (s) {
+    case SolveStatus::kOk: return pose2d_t::STATUS_OK;
+    case SolveStatus::kDegraded: return pose2d_t::STATUS_DEGRADED;
+    case SolveStatus::kLost: break;
+  }
+  return pose2d_t::STATUS_LOST;
+}
+
+int run(const std::string& lcm_url, const std::string& config_path, const std::string& robot_path) {
+  SolverServiceConfig config;
+  if (!config_path.empty()) {
+    const JsonConfig file = JsonConfig::load_file(config_path);
+    config = parse_solver_service_config(file);
+    file.reject_unknown_keys();
+  }
+  const Pose2 robot_T_laser = load_robot_config(robot_path).robot_T_laser;
+  PoseSolver solver(config.solver, robot_T_laser);
+  spdlog::info("mode {}, laser mount ({:.3f} m, {:.3f} m, {:.4f} rad)",
+               config.solver.mode == SolverMode::kPaper ? "paper" : "default", robot_T_laser.x, robot_T_laser.y,
+               robot_T_laser.theta);
+
+  ServiceRuntime runtime("pose_solver", lcm_url);
+  std::vector<ReflectorDetection> detections;
+  std::vector<ReflectorMatch> matches;
+  PoseSolution solution;
+  pose2d_t out{};
+
+  runtime.subscribe<reflector_matches_t>(config.input_channel, [&](const reflector_matches_t& msg) {
+    // Each match carries its detection: the solver sees them as detections 0..n-1.
+    detections.clear();
+    matches.clear();
+    for (const reflector_match_t& m : msg.matches) {
+      ReflectorDetection d;
+      d.laser_p_center = {m.detection.x, m.detection.y};
+      d.covariance << m.detection.covariance[0], m.detection.covariance[1], m.detection.covariance[2],
+          m.detection.covariance[3];
+      d.range = m.detection.range;
+      d.bearing = m.detection.bearing;
+      d.utime = m.detection.utime;
+      matches.push_back({static_cast<int>(detections.size()), m.map_id, {m.map_x, m.map_y}, m.map_radius});
+      detections.push_back(d);
+    }
+    out.utime = msg.utime;
+    if (msg.status == reflector_matches_t::STATUS_OK) {
+      solver.solve(detections, matches, solution);
+      out.status = to_message_status(solution.status);
+    } else {
+      // The matcher's doubt wins: a pose from an ambiguous association is not a fix.
+      solution.status = SolveStatus::kLost;
+      solution.reflectors_used = 0;
+      solution.rms_residual = 0.0;
+      out.status = msg.status == reflector_matches_t::STATUS_AMBIGUOUS ? pose2d_t::STATUS_AMBIGUOUS : pose2d_t::STATUS_LOST;
+    }
+    const bool has_pose = msg.status == reflector_matches_t::STATUS_OK && solution.status != SolveStatus::kLost;
+    out.x = has_pose ? solution.map_T_robot.x : 0.0;
+    out.y = has_pose ? solution.map_T_robot.y : 0.0;
+    out.theta = has_pose ? solution.map_T_robot.theta : 0.0;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) out.covariance[3 * r + c] = has_pose ? solution.covariance(r, c) : (r == c ? 1e6 : 0.0);
+    out.reflectors_used = has_pose ? solution.reflectors_used : 0;
+    out.residual = has_pose ? solution.rms_residual : 0.0;
+    if (out.status == pose2d_t::STATUS_OK) {
+      runtime.set_state(heartbeat_t::STATE_OK);
+    } else {
+      if (out.status == pose2d_t::STATUS_DEGRADED) ++runtime.counter("degraded_fixes");
+      if (out.status == pose2d_t::STATUS_LOST) ++runtime.counter("lost_fixes");
+      if (out.status == pose2d_t::STATUS_AMBIGUOUS) ++runtime.counter("ambiguous_fixes");
+      runtime.set_state(heartbeat_t::STATE_DEGRADED, has_pose ? "last fix DEGRADED" : "no fix from the last scan");
+    }
+    if (has_pose && solution.reflectors_used < static_cast<int>(matches.size())) {
+      runtime.counter("outlier_matches") += static_cast<int64_t>(matches.size()) - solution.reflectors_used;
+    }
+    runtime.publish(config.output_channel, out);
+  });
+  return runtime.run();
+}
+
+}  // namespace
+}  // namespace refloc
+
+int main(int argc, char** argv) {
+  CLI::App app{"Pose solver: REFLECTOR_MATCHES -> LASER_POSE (map_T_robot with covariance)"};
+  std::string lcm_url, config_path = "deploy/config/pose_solver.json", robot_path = "deploy/config/robot.json";
+  bool verbose = false;
+  app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
+  app.add_option("--config", config_path, "service config file (JSON); empty for defaults")->capture_default_str();
+  app.add_option("--robot", robot_path, "robot geometry file with /laser_mount (JSON)")->capture_default_str();
+  app.add_flag("-v,--verbose", verbose, "debug log lines");
+  CLI11_PARSE(app, argc, argv);
+  return refloc::guarded_main("pose_solver", [&] {
+    refloc::setup_logging("pose_solver", verbose);
+    return refloc::run(lcm_url, config_path, robot_path);
+  });
+}

@@ -1,0 +1,21 @@
+#include "pose_solver/solver_config_file.hpp"
+
+#include "common/json_config.hpp"
+
+namespace refloc {
+
+SolverServiceConfig parse_solver_service_config(const JsonConfig& config) {
+  SolverServiceConfig s;
+  SolverConfig& c = s.solver;
+  c.mode = config.choice("/mode", "default", {"default", "paper"}) == "paper" ? SolverMode::kPaper : SolverMode::kDefault;
+  s.input_channel = config.string("/input_channel", s.input_channel);
+  s.output_channel = config.string("/output_channel", s.output_channel);
+  c.max_iterations = static_cast<int>(config.integer("/max_iterations", c.max_iterations, 1, 1000));
+  c.detection_min_sigma = config.number("/detection_min_sigma_m", c.detection_min_sigma, 1e-5, 1.0);
+  c.outlier_threshold = config.number("/outlier_threshold_sigma", c.outlier_threshold, 1.0, 100.0);
+  c.min_reflectors_ok = static_cast<int>(config.integer("/min_reflectors_ok", c.min_reflectors_ok, 3, 100));
+  c.max_rms_residual_ok = config.number("/max_rms_residual_ok_m", c.max_rms_residual_ok, 1e-4, 10.0);
+  return s;
+}
+
+}  // namespace refloc

@@ -1,0 +1,66 @@
+#include "reflector_matcher/matcher_config_file.hpp"
+
+#include "common/json_config.hpp"
+
+#include <filesystem>
+
+namespace refloc {
+
+MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, const std::string& base_dir) {
+  MatcherServiceConfig s;
+  MatcherConfig& m = s.matcher;
+  constexpr double kDeg = M_PI / 180.0;
+  const std::string map_name = config.string("/map_file", "map_demo.json");
+  std::filesystem::path map_path(map_name);
+  if (map_path.is_relative() && !base_dir.empty()) map_path = std::filesystem::path(base_dir) / map_path;
+  s.map_file = map_path.lexically_normal().string();
+  m.mode = config.choice("/mode", "default", {"default", "paper"}) == "paper" ? MatcherMode::kPaper
+                                                                                : MatcherMode::kDefault;
+  s.input_channel = config.string("/input_channel", s.input_channel);
+  s.prior_channel = config.string("/prior_channel", s.prior_channel);
+  s.output_channel = config.string("/output_channel", s.output_channel);
+  s.prior_max_age = config.number("/prior_max_age_s", s.prior_max_age, 0.0, 10.0);
+  s.use_own_pose_as_prior = config.boolean("/use_own_pose_as_prior", s.use_own_pose_as_prior);
+  s.own_prior_sigma_xy = config.number("/own_prior_sigma_m", s.own_prior_sigma_xy, 0.001, 10.0);
+  s.own_prior_sigma_theta = config.number("/own_prior_sigma_deg", s.own_prior_sigma_theta / kDeg, 0.01, 90.0) * kDeg;
+
+  m.min_range = config.number("/sensor/min_range_m", m.min_range, 0.0, 100.0);
+  m.max_range = config.number("/sensor/max_range_m", m.max_range, 0.5, 100.0);
+  m.field_of_view = config.number("/sensor/field_of_view_deg", m.field_of_view / kDeg, 1.0, 360.0) * kDeg;
+  if (m.min_range >= m.max_range) config.fail("/sensor/min_range_m", "must be below /sensor/max_range_m");
+
+  m.paper_side_tolerance = config.number("/paper/side_tolerance_m", m.paper_side_tolerance, 0.001, 2.0);
+  m.paper_angle_tolerance = config.number("/paper/angle_tolerance_deg", m.paper_angle_tolerance / kDeg, 0.01, 45.0) * kDeg;
+
+  m.prior_min_sigma_xy = config.number("/tracking/prior_min_sigma_m", m.prior_min_sigma_xy, 0.0, 10.0);
+  m.prior_min_sigma_theta =
+      config.number("/tracking/prior_min_sigma_deg", m.prior_min_sigma_theta / kDeg, 0.0, 90.0) * kDeg;
+  m.tracking_gate_chi2 = config.number("/tracking/gate_chi2", m.tracking_gate_chi2, 0.1, 1000.0);
+  m.detection_min_sigma = config.number("/tracking/detection_min_sigma_m", m.detection_min_sigma, 0.0, 1.0);
+
+  m.triangle_side_tolerance = config.number("/relocalization/side_tolerance_m", m.triangle_side_tolerance, 0.001, 2.0);
+  m.min_triangle_side = config.number("/relocalization/min_triangle_side_m", m.min_triangle_side, 0.0, 50.0);
+  m.max_triangle_side = config.number("/relocalization/max_triangle_side_m", 2.0 * m.max_range, 0.1, 1000.0);
+  m.max_index_triangles = static_cast<int>(
+      config.integer("/relocalization/max_index_triangles", m.max_index_triangles, 1000, 100000000));
+  m.max_triple_detections =
+      static_cast<int>(config.integer("/relocalization/max_triple_detections", m.max_triple_detections, 3, 100));
+  m.max_hypotheses = static_cast<int>(config.integer("/relocalization/max_hypotheses", m.max_hypotheses, 1, 10000000));
+  m.hypothesis_fit_max_error =
+      config.number("/relocalization/hypothesis_fit_max_error_m", m.hypothesis_fit_max_error, 0.001, 5.0);
+  m.verify_coarse_gate = config.number("/relocalization/verify_coarse_gate_m", m.verify_coarse_gate, 0.001, 5.0);
+  m.verify_fine_gate = config.number("/relocalization/verify_fine_gate_m", m.verify_fine_gate, 0.001, 5.0);
+  m.missed_penalty = config.number("/relocalization/missed_penalty", m.missed_penalty, 0.0, 10.0);
+  m.unexplained_penalty = config.number("/relocalization/unexplained_penalty", m.unexplained_penalty, 0.0, 10.0);
+  m.min_explained_fraction =
+      config.number("/relocalization/min_explained_fraction", m.min_explained_fraction, 0.0, 1.0);
+  m.ambiguity_ratio = config.number("/relocalization/ambiguity_ratio", m.ambiguity_ratio, 0.0, 1.0);
+  m.distinct_pose_distance =
+      config.number("/relocalization/distinct_pose_distance_m", m.distinct_pose_distance, 0.0, 100.0);
+  m.distinct_pose_angle =
+      config.number("/relocalization/distinct_pose_angle_deg", m.distinct_pose_angle / kDeg, 0.0, 180.0) * kDeg;
+  m.min_matches = static_cast<int>(config.integer("/min_matches", m.min_matches, 3, 100));
+  return s;
+}
+
+}  // namespace refloc
