@@ -1,0 +1,27 @@
+#pragma once
+// deploy/config/reflector_extractor.json: the extractor's parameters and the service's
+// channels. Every key is optional (defaults from ExtractorConfig, or from
+// ExtractorConfig::paper() when "mode" is "paper"); values are range-checked.
+
+#include "reflector_extractor/extractor.hpp"
+
+#include <string>
+
+namespace refloc {
+
+class JsonConfig;
+
+struct ExtractorServiceConfig {
+  ExtractorConfig extractor;
+  std::string input_channel = "LMS100_SCAN";
+  std::string output_channel = "REFLECTORS";
+  std::string odometry_channel = "ODOMETRY";
+  bool motion_compensation = true;
+  /// Odometry older than this (by message utime, relative to the scan) is not used [s].
+  double odometry_max_age = 0.2;
+};
+
+/// Read the service config from a loaded document (the caller rejects unknown keys).
+ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& config);
+
+}  // namespace refloc

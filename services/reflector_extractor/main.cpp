@@ -1,0 +1,128 @@
+// reflector_extractor: LMS100_SCAN (laser_scan_t) -> REFLECTORS (reflector_detections_t),
+// one output per scan, each detection motion-compensated to the scan's first beam with
+// the latest ODOMETRY twist.
+
+#include "common/guarded_main.hpp"
+#include "common/json_config.hpp"
+#include "common/lcm_conversions.hpp"
+#include "common/robot_config.hpp"
+#include "common/service_runtime.hpp"
+#include "reflector_extractor/extractor.hpp"
+#include "reflector_extractor/extractor_config_file.hpp"
+#include "reflector_extractor/motion_compensation.hpp"
+
+#include <CLI/CLI.hpp>
+#include <refloc/heartbeat_t.hpp>
+#include <refloc/laser_scan_t.hpp>
+#include <refloc/odometry_t.hpp>
+#include <refloc/reflector_detections_t.hpp>
+
+#include <cstdlib>
+#include <optional>
+#include <string>
+
+namespace refloc {
+namespace {
+
+reflector_t to_message(const ReflectorDetection& d) {
+  reflector_t r{};
+  r.x = d.laser_p_center.x();
+  r.y = d.laser_p_center.y();
+  r.covariance[0] = d.covariance(0, 0);
+  r.covariance[1] = d.covariance(0, 1);
+  r.covariance[2] = d.covariance(1, 0);
+  r.covariance[3] = d.covariance(1, 1);
+  r.range = d.range;
+  r.bearing = d.bearing;
+  r.utime = d.utime;
+  r.first_beam = d.first_beam;
+  r.nbeams = d.num_beams;
+  r.mean_rssi = static_cast<float>(d.mean_rssi);
+  r.roundness_m = static_cast<float>(d.roundness_m);
+  r.fitted_radius_m = static_cast<float>(d.fitted_radius_m);
+  return r;
+}
+
+int run(const std::string& lcm_url, const std::string& config_path, const std::string& robot_path) {
+  ExtractorServiceConfig config;
+  if (!config_path.empty()) {
+    const JsonConfig file = JsonConfig::load_file(config_path);
+    config = parse_extractor_service_config(file);
+    file.reject_unknown_keys();
+  }
+  Pose2 robot_T_laser;
+  if (config.motion_compensation && !robot_path.empty()) robot_T_laser = load_robot_config(robot_path).robot_T_laser;
+  ReflectorExtractor extractor(config.extractor);
+  spdlog::info("mode {}, energy threshold {:.0f}, radius {:.3f} m, motion compensation {}",
+               config.extractor.mode == ExtractorConfig::Mode::kPaper ? "paper" : "default",
+               config.extractor.energy_threshold_8bit, config.extractor.reflector_radius,
+               config.motion_compensation ? "on" : "off");
+
+  ServiceRuntime runtime("reflector_extractor", lcm_url);
+  std::optional<odometry_t> last_odometry;
+  LaserScan scan;
+  std::vector<ReflectorDetection> detections;
+  reflector_detections_t out;
+  const auto max_age_us = static_cast<int64_t>(config.odometry_max_age * 1e6);
+
+  runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) { last_odometry = msg; });
+  runtime.subscribe<laser_scan_t>(config.input_channel, [&](const laser_scan_t& msg) {
+    if (!from_lcm(msg, scan)) {
+      ++runtime.counter("inconsistent_scans");
+      return;
+    }
+    detections = extractor.extract(scan);
+    if (config.motion_compensation) {
+      if (last_odometry && std::llabs(last_odometry->utime - scan.utime) <= max_age_us) {
+        compensate_motion(detections, scan.utime, BodyTwist{last_odometry->vx, last_odometry->vy, last_odometry->wz},
+                          robot_T_laser);
+      } else {
+        ++runtime.counter("scans_without_fresh_odometry");
+      }
+    }
+    const ExtractionStats& stats = extractor.stats();
+    runtime.counter("rejected_too_few_beams") += stats.rejected_too_few_beams;
+    runtime.counter("rejected_shape") += stats.rejected_too_wide + stats.rejected_too_narrow + stats.rejected_not_round +
+                                         stats.rejected_radius + stats.rejected_fit_failed;
+    runtime.counter("rejected_occluded") += stats.rejected_occluded;
+    if (detections.empty()) ++runtime.counter("scans_without_reflectors");
+
+    out.utime = scan.utime;
+    out.scan_counter = static_cast<int32_t>(scan.scan_counter);
+    out.clusters_considered = stats.clusters_considered;
+    out.clusters_rejected = stats.rejected();
+    out.reflectors.clear();
+    for (const ReflectorDetection& d : detections) out.reflectors.push_back(to_message(d));
+    out.nreflectors = static_cast<int32_t>(out.reflectors.size());  // LCM trusts the length field
+    runtime.publish(config.output_channel, out);
+  });
+
+  runtime.add_periodic(1.0, [&] {
+    if (runtime.messages_in() == 0) {
+      runtime.set_state(heartbeat_t::STATE_STARTING, "waiting for " + config.input_channel);
+    } else {
+      runtime.set_state(heartbeat_t::STATE_OK);
+    }
+  });
+  return runtime.run();
+}
+
+}  // namespace
+}  // namespace refloc
+
+int main(int argc, char** argv) {
+  CLI::App app{"reflector_extractor: laser scans in, retro-reflector detections out (LCM service)"};
+  std::string lcm_url;
+  std::string config_path = "deploy/config/reflector_extractor.json";
+  std::string robot_path = "deploy/config/robot.json";
+  bool verbose = false;
+  app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm with ttl=0)");
+  app.add_option("--config", config_path, "service config file (JSON); empty for defaults")->capture_default_str();
+  app.add_option("--robot", robot_path, "robot config with the laser mount (robot_T_laser)")->capture_default_str();
+  app.add_flag("-v,--verbose", verbose, "debug log lines");
+  CLI11_PARSE(app, argc, argv);
+  return refloc::guarded_main("reflector_extractor", [&] {
+    refloc::setup_logging("reflector_extractor", verbose);
+    return refloc::run(lcm_url, config_path, robot_path);
+  });
+}
