@@ -1,0 +1,128 @@
+// Matcher timing: tracking association per scan, the whole tracking pipeline
+// (match + pose solve), global relocalization in maps of 10, 100 and 1000
+// reflectors with a realistic density (about 8 reflectors in view), and the
+// one-off index build.
+
+#include "pose_solver/pose_solver.hpp"
+#include "reflector_matcher/reflector_matcher.hpp"
+
+#include "synthetic_detections.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+namespace refloc {
+namespace {
+
+/// Side of a square holding n reflectors at the density that puts ~8 in a 20 m, 270 deg view.
+double square_side_for(int n) {
+  const double view_area = 0.75 * M_PI * 20.0 * 20.0;  // [m^2]
+  return std::sqrt(n * view_area / 8.0);
+}
+
+struct Scenario {
+  ReflectorMap map;
+  std::vector<Pose2> poses;
+  std::vector<testing::SyntheticScan> scans;
+};
+
+/// Random map of n reflectors and 64 poses inside it that see >= 4 reflectors.
+Scenario make_scenario(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  Scenario s;
+  const double side = square_side_for(n);
+  s.map = testing::random_map(n, side, side, 1.0, rng);
+  std::uniform_real_distribution<double> u(0.0, side), ua(-M_PI, M_PI);
+  while (s.poses.size() < 64) {
+    const Pose2 pose{u(rng), u(rng), ua(rng)};
+    auto scan = testing::render_detections(s.map, pose, testing::SyntheticSensor{}, rng);
+    if (scan.detections.size() < 4) continue;
+    s.poses.push_back(pose);
+    s.scans.push_back(std::move(scan));
+  }
+  return s;
+}
+
+void BM_TrackingMatch(benchmark::State& state) {
+  const Scenario s = make_scenario(100, 1);
+  ReflectorMatcher matcher(s.map, MatcherConfig{});
+  MatchResult result;
+  size_t k = 0, detections = 0;
+  for (auto _ : state) {
+    const size_t i = k++ % s.poses.size();
+    // Prior 5 cm / 0.5 deg off, as from the fused pose between scans.
+    const PosePrior prior{Pose2{s.poses[i].x + 0.05, s.poses[i].y - 0.03, s.poses[i].theta + 0.009},
+                          Eigen::Vector3d(0.01, 0.01, 1e-4).asDiagonal()};
+    matcher.match(s.scans[i].detections, &prior, result);
+    detections += s.scans[i].detections.size();
+    benchmark::DoNotOptimize(result.matches.data());
+  }
+  state.counters["detections_per_scan"] = static_cast<double>(detections) / static_cast<double>(k);
+}
+BENCHMARK(BM_TrackingMatch)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true);
+
+void BM_TrackingPipelineMatchAndSolve(benchmark::State& state) {
+  const Scenario s = make_scenario(100, 2);
+  ReflectorMatcher matcher(s.map, MatcherConfig{});
+  PoseSolver solver(SolverConfig{}, Pose2{0.3, 0.0, 0.0});
+  MatchResult result;
+  PoseSolution solution;
+  size_t k = 0;
+  for (auto _ : state) {
+    const size_t i = k++ % s.poses.size();
+    const PosePrior prior{Pose2{s.poses[i].x + 0.05, s.poses[i].y - 0.03, s.poses[i].theta + 0.009},
+                          Eigen::Vector3d(0.01, 0.01, 1e-4).asDiagonal()};
+    matcher.match(s.scans[i].detections, &prior, result);
+    solver.solve(s.scans[i].detections, result.matches, solution);
+    benchmark::DoNotOptimize(solution.map_T_robot.x);
+  }
+}
+BENCHMARK(BM_TrackingPipelineMatchAndSolve)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true);
+
+void BM_GlobalRelocalization(benchmark::State& state) {
+  const Scenario s = make_scenario(static_cast<int>(state.range(0)), 3);
+  ReflectorMatcher matcher(s.map, MatcherConfig{});
+  MatchResult result;
+  size_t k = 0, ok = 0;
+  for (auto _ : state) {
+    const size_t i = k++ % s.poses.size();
+    matcher.match(s.scans[i].detections, nullptr, result);
+    ok += result.status == MatchStatus::kOk;
+  }
+  state.counters["ok_fraction"] = static_cast<double>(ok) / static_cast<double>(k);
+  state.counters["triangles"] = static_cast<double>(matcher.indexed_triangles());
+}
+BENCHMARK(BM_GlobalRelocalization)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+void BM_PaperMatch(benchmark::State& state) {
+  const Scenario s = make_scenario(static_cast<int>(state.range(0)), 4);
+  MatcherConfig config;
+  config.mode = MatcherMode::kPaper;
+  ReflectorMatcher matcher(s.map, config);
+  MatchResult result;
+  size_t k = 0;
+  for (auto _ : state) {
+    const size_t i = k++ % s.poses.size();
+    matcher.match(s.scans[i].detections, nullptr, result);
+    benchmark::DoNotOptimize(result.matches.data());
+  }
+}
+BENCHMARK(BM_PaperMatch)->Arg(10)->Arg(100)->Unit(benchmark::kMicrosecond);
+
+void BM_BuildMatcher(benchmark::State& state) {
+  std::mt19937 rng(5);
+  const int n = static_cast<int>(state.range(0));
+  const double side = square_side_for(n);
+  const ReflectorMap map = testing::random_map(n, side, side, 1.0, rng);
+  for (auto _ : state) {
+    ReflectorMatcher matcher(map, MatcherConfig{});
+    benchmark::DoNotOptimize(matcher.indexed_triangles());
+  }
+}
+BENCHMARK(BM_BuildMatcher)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace refloc
+
+BENCHMARK_MAIN();
