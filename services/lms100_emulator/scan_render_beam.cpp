@@ -80,7 +80,7 @@ BeamProfile make_beam_profile(const Lms100ErrorModel& model) {
 }
 
 BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100ErrorModel& model,
-                    const Eigen::Vector2d& map_p_origin, double map_angle) {
+                    const Eigen::Vector2d& map_p_origin, double map_angle, const BeamCandidates* candidates) {
   const Eigen::Vector2d axis(std::cos(map_angle), std::sin(map_angle));
   const Eigen::Vector2d lateral(-axis.y(), axis.x());
   // Returns beyond this can neither be reported nor blend into a reportable echo.
@@ -97,12 +97,12 @@ BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100
     dir[k] = profile.cos_angle[k] * axis + profile.sin_angle[k] * lateral;
   }
 
-  for (const MapReflector& r : world.reflectors.reflectors) {
+  const auto visit_reflector = [&](const MapReflector& r) {
     const Eigen::Vector2d rel = r.map_p_center - map_p_origin;
     const double cx = rel.dot(axis);
     const double cy = rel.dot(lateral);
-    if (cx < -r.radius || cx > x_max + r.radius) continue;
-    if (std::abs(cy) - r.radius > h0 + std::max(cx + r.radius, 0.0) * tan_half) continue;
+    if (cx < -r.radius || cx > x_max + r.radius) return;
+    if (std::abs(cy) - r.radius > h0 + std::max(cx + r.radius, 0.0) * tan_half) return;
     const double r2 = r.radius * r.radius;
     for (int k = 0; k < n; ++k) {
       const Eigen::Vector2d f = origin[k] - r.map_p_center;
@@ -117,14 +117,14 @@ BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100
       hit[k].kind = HitKind::kReflector;
       hit[k].id = r.id;
     }
-  }
+  };
 
-  for (size_t i = 0; i < world.segments.size(); ++i) {
+  const auto visit_segment = [&](size_t i) {
     const WorldSegment& s = world.segments[i];
     const Eigen::Vector2d a = s.map_p_a - map_p_origin;
     const Eigen::Vector2d b = s.map_p_b - map_p_origin;
     if (!segment_may_meet_cone(a.dot(axis), a.dot(lateral), b.dot(axis), b.dot(lateral), h0, tan_half, x_max)) {
-      continue;
+      return;
     }
     const Eigen::Vector2d e = s.map_p_b - s.map_p_a;
     for (int k = 0; k < n; ++k) {
@@ -140,6 +140,19 @@ BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100
       hit[k].id = static_cast<int>(i);
       hit[k].remission = s.remission;
     }
+  };
+
+  if (candidates != nullptr) {
+    for (const int32_t* c = candidates->begin; c != candidates->end; ++c) {
+      if (*c >= 0) {
+        visit_reflector(world.reflectors.reflectors[static_cast<size_t>(*c)]);
+      } else {
+        visit_segment(static_cast<size_t>(-(*c + 1)));
+      }
+    }
+  } else {
+    for (const MapReflector& r : world.reflectors.reflectors) visit_reflector(r);
+    for (size_t i = 0; i < world.segments.size(); ++i) visit_segment(i);
   }
 
   // Order the returns by range, then blend neighbours into echoes.
@@ -189,8 +202,10 @@ BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100
 }
 
 BeamEcho render_beam(const World& world, const BeamProfile& profile, const Lms100ErrorModel& model,
-                     const Pose2& map_T_laser, double laser_angle, std::mt19937_64& rng) {
-  BeamEcho echo = trace_beam(world, profile, model, map_T_laser.translation(), map_T_laser.theta + laser_angle);
+                     const Pose2& map_T_laser, double laser_angle, std::mt19937_64& rng,
+                     const BeamCandidates* candidates) {
+  BeamEcho echo =
+      trace_beam(world, profile, model, map_T_laser.translation(), map_T_laser.theta + laser_angle, candidates);
   if (echo.truth.kind == HitKind::kNone) return echo;
   if (echo.truth.kind == HitKind::kReflector && echo.truth.range < model.dazzle_range) {
     echo.range = 0.001;

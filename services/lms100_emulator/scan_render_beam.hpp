@@ -41,6 +41,13 @@ struct BeamEcho {
 
 constexpr int kMaxBeamSubrays = 31;
 
+/// A subset of a world's primitives for one beam: reflector index r (into
+/// world.reflectors.reflectors) is coded r, segment index s is coded -(s + 1).
+struct BeamCandidates {
+  const int32_t* begin = nullptr;
+  const int32_t* end = nullptr;
+};
+
 /// Sub-ray layout of the spot, computed once from the model.
 struct BeamProfile {
   int count = 0;
@@ -55,13 +62,16 @@ struct BeamProfile {
 /// Sub-ray layout for the model's beam (clamps beam_subrays to 1..kMaxBeamSubrays).
 BeamProfile make_beam_profile(const Lms100ErrorModel& model);
 
-/// Noise-free echo of the beam leaving map_p_origin towards map_angle [rad].
+/// Noise-free echo of the beam leaving map_p_origin towards map_angle [rad]; tests only
+/// the candidates when given (see scan_render_index.hpp), else the whole world.
 BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100ErrorModel& model,
-                    const Eigen::Vector2d& map_p_origin, double map_angle);
+                    const Eigen::Vector2d& map_p_origin, double map_angle,
+                    const BeamCandidates* candidates = nullptr);
 
 /// The echo the sensor reports for beam laser_angle [rad] from map_T_laser: traced,
 /// then range noise, offset, limits, quantisation and RSSI noise applied.
 BeamEcho render_beam(const World& world, const BeamProfile& profile, const Lms100ErrorModel& model,
-                     const Pose2& map_T_laser, double laser_angle, std::mt19937_64& rng);
+                     const Pose2& map_T_laser, double laser_angle, std::mt19937_64& rng,
+                     const BeamCandidates* candidates = nullptr);
 
 }  // namespace refloc::sim

@@ -25,9 +25,14 @@ void ScanRenderer::render(const World& world, const PoseAtTime& map_T_laser_at, 
   out.ranges.resize(n);
   out.rssi.resize(config_.rssi_bits == 0 ? 0 : n);
   truth_.resize(n);
+  beam_poses_.resize(n);
+  for (size_t i = 0; i < n; ++i) beam_poses_[i] = map_T_laser_at(out.beam_utime(i));
+  const double reach = config_.sensor.range_max + config_.sensor.echo_merge_distance + 0.1;
+  if (!brute_force_) index_.build(world, beam_poses_, g.start_angle, g.angle_increment, profile_, reach);
   for (size_t i = 0; i < n; ++i) {
-    const Pose2 map_T_laser = map_T_laser_at(out.beam_utime(i));
-    const BeamEcho echo = render_beam(world, profile_, config_.sensor, map_T_laser, out.beam_angle(i), rng);
+    const BeamCandidates candidates = brute_force_ ? BeamCandidates{} : index_.candidates(i);
+    const BeamEcho echo = render_beam(world, profile_, config_.sensor, beam_poses_[i], out.beam_angle(i), rng,
+                                      brute_force_ ? nullptr : &candidates);
     out.ranges[i] = static_cast<float>(echo.range);
     if (config_.rssi_bits != 0) out.rssi[i] = rssi_for_bits(echo.rssi, config_.rssi_bits);
     truth_[i] = echo.truth;

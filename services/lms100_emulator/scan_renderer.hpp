@@ -7,6 +7,7 @@
 #include "common/se2.hpp"
 #include "lms100_emulator/lms100_error_model.hpp"
 #include "lms100_emulator/scan_render_beam.hpp"
+#include "lms100_emulator/scan_render_index.hpp"
 #include "lms100_emulator/world.hpp"
 
 #include <cstdint>
@@ -58,12 +59,18 @@ class ScanRenderer {
   const ScanRenderConfig& config() const { return config_; }
   /// Change which beams the next renders produce (e.g. to follow an emulator's request).
   void set_geometry(const ScanGeometry& geometry) { config_.geometry = geometry; }
+  /// Test every primitive with every beam instead of the per-scan candidate index
+  /// (same result, slower; for tests and benchmarks).
+  void set_brute_force(bool brute_force) { brute_force_ = brute_force; }
   const BeamProfile& profile() const { return profile_; }
 
  private:
   ScanRenderConfig config_;
   BeamProfile profile_;
   std::vector<BeamTruth> truth_;
+  std::vector<Pose2> beam_poses_;
+  BeamCandidateIndex index_;
+  bool brute_force_ = false;
 };
 
 /// Convenience: render one scan with a throw-away renderer.

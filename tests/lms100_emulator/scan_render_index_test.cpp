@@ -1,0 +1,81 @@
+#include "lms100_emulator/scan_render_index.hpp"
+#include "lms100_emulator/scan_renderer.hpp"
+#include "lms100_emulator/world_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace refloc::sim {
+namespace {
+
+const std::string kConfigDir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/";
+
+/// Render with and without the candidate index from the same RNG state.
+void expect_same_scan(const World& world, const PoseAtTime& pose_at, int64_t utime, uint64_t seed) {
+  ScanRenderer indexed;
+  ScanRenderer brute;
+  brute.set_brute_force(true);
+  std::mt19937_64 rng_a(seed);
+  std::mt19937_64 rng_b(seed);
+  LaserScan a;
+  LaserScan b;
+  indexed.render(world, pose_at, utime, rng_a, a);
+  brute.render(world, pose_at, utime, rng_b, b);
+  ASSERT_EQ(a.ranges.size(), b.ranges.size());
+  for (size_t i = 0; i < a.ranges.size(); ++i) {
+    ASSERT_EQ(a.ranges[i], b.ranges[i]) << "beam " << i << " seed " << seed;
+    ASSERT_EQ(a.rssi[i], b.rssi[i]) << "beam " << i << " seed " << seed;
+  }
+}
+
+TEST(BeamCandidateIndex, GivesTheSameScansAsTestingEverything) {
+  const World world = load_world(kConfigDir + "world_demo.json");
+  std::mt19937_64 pick(5);
+  std::uniform_real_distribution<double> x(0.3, 19.7);
+  std::uniform_real_distribution<double> y(0.3, 11.7);
+  std::uniform_real_distribution<double> heading(-M_PI, M_PI);
+  std::uniform_real_distribution<double> speed(-2.0, 2.0);
+  for (uint64_t k = 0; k < 60; ++k) {
+    const Pose2 start{x(pick), y(pick), heading(pick)};
+    const double vx = speed(pick);
+    const double vy = speed(pick);
+    const double wz = 3.0 * speed(pick);  // up to 6 rad/s: a fast spin during the 15 ms sweep
+    expect_same_scan(world, [start](int64_t) { return start; }, 0, k);
+    expect_same_scan(
+        world,
+        [=](int64_t utime) {
+          const double t = utime * 1e-6;
+          return Pose2{start.x + vx * t, start.y + vy * t, start.theta + wz * t};
+        },
+        0, k);
+  }
+}
+
+TEST(BeamCandidateIndex, CloseObjectsAndWrapAroundAreCandidatesEverywhereTheyCanBeHit) {
+  // A reflector touching the sensor, a wall right behind it (across the +-180 deg cut).
+  World world;
+  MapReflector r;
+  r.id = 1;
+  r.map_p_center = {0.08, 0.0};
+  world.reflectors.reflectors.push_back(r);
+  add_polyline(world, {{-1.0, -3.0}, {-1.0, 3.0}, {4.0, 3.0}}, false, SurfaceKind::kDiffuse, 0.5);
+  for (uint64_t seed = 0; seed < 5; ++seed) {
+    const double theta = M_PI - 0.3 * static_cast<double>(seed);
+    expect_same_scan(world, [theta](int64_t) { return Pose2{0.0, 0.0, theta}; }, 0, seed);
+  }
+}
+
+TEST(BeamCandidateIndex, KeepsFewCandidatesPerBeamInTheDemoHall) {
+  const World world = load_world(kConfigDir + "world_demo.json");
+  ScanRenderer renderer;
+  BeamCandidateIndex index;
+  const std::vector<Pose2> poses(541, Pose2{6.7, 2.2, 0.3});
+  index.build(world, poses, -135.0 * M_PI / 180.0, 0.5 * M_PI / 180.0, renderer.profile(), 20.5);
+  const double per_beam = static_cast<double>(index.size()) / 541.0;
+  const double everything = static_cast<double>(world.reflectors.reflectors.size() + world.segments.size());
+  EXPECT_LT(per_beam, 0.25 * everything) << per_beam << " of " << everything;
+}
+
+}  // namespace
+}  // namespace refloc::sim
