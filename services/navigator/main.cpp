@@ -80,7 +80,7 @@ int run(const std::string& lcm_url, const std::string& config_path) {
   };
 
   runtime.subscribe<nav_goal_t>(config.goal_channel, [&](const nav_goal_t& msg) {
-    navigator.set_goal(to_goal(msg), now_utime());
+    if (!navigator.set_goal(to_goal(msg), now_utime())) return;  // republished, already running
     if (navigator.status().state == NavState::kAborted) ++runtime.counter("goals_refused");
     publish_status(true);
   });

@@ -21,7 +21,24 @@ const char* to_string(NavState state) {
 
 Navigator::Navigator(const NavigatorConfig& config) : config_(config), translation_(config.translation) {}
 
-void Navigator::set_goal(const NavGoal& goal, int64_t now_utime) {
+namespace {
+
+bool same_goal(const NavGoal& a, const NavGoal& b) {
+  if (a.goal_id != b.goal_id || a.waypoints.size() != b.waypoints.size() || a.xy_tolerance != b.xy_tolerance ||
+      a.heading_tolerance != b.heading_tolerance || a.max_speed != b.max_speed) {
+    return false;
+  }
+  for (size_t i = 0; i < a.waypoints.size(); ++i) {
+    const Waypoint &p = a.waypoints[i], &q = b.waypoints[i];
+    if (p.x != q.x || p.y != q.y || p.theta != q.theta) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool Navigator::set_goal(const NavGoal& goal, int64_t now_utime) {
+  if (status_.state != NavState::kIdle && same_goal(goal, goal_)) return false;
   stop_output();
   goal_ = goal;
   status_ = NavStatus{};
@@ -29,19 +46,19 @@ void Navigator::set_goal(const NavGoal& goal, int64_t now_utime) {
   status_.nwaypoints = static_cast<int>(goal.waypoints.size());
   if (goal.waypoints.empty()) {
     abort("cancelled: goal without waypoints");
-    return;
+    return true;
   }
   for (size_t i = 0; i < goal.waypoints.size(); ++i) {
     const Waypoint& w = goal.waypoints[i];
     if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.theta)) {
       abort(fmt::format("invalid goal: waypoint {} is not finite", i));
-      return;
+      return true;
     }
   }
   if (!std::isfinite(goal.xy_tolerance) || !std::isfinite(goal.heading_tolerance) ||
       !std::isfinite(goal.max_speed)) {
     abort("invalid goal: tolerance or speed is not finite");
-    return;
+    return true;
   }
   xy_tolerance_ = goal.xy_tolerance > 0.0 ? goal.xy_tolerance : config_.default_xy_tolerance;
   heading_tolerance_ =
@@ -52,6 +69,7 @@ void Navigator::set_goal(const NavGoal& goal, int64_t now_utime) {
   best_distance_ = std::numeric_limits<double>::infinity();
   best_heading_error_ = std::numeric_limits<double>::infinity();
   progress_utime_ = now_utime;
+  return true;
 }
 
 void Navigator::set_pose(const Pose2& map_T_robot, int64_t pose_utime, PoseQuality quality) {

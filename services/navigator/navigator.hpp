@@ -74,7 +74,9 @@ class Navigator {
 
   /// Start a new goal (replacing any current one) at now_utime [us]. An empty
   /// goal cancels; a goal with non-finite values is refused (ABORTED with reason).
-  void set_goal(const NavGoal& goal, int64_t now_utime);
+  /// The same goal again (same id and content, as a sender republishing it for
+  /// late joiners does) is ignored: returns false.
+  bool set_goal(const NavGoal& goal, int64_t now_utime);
   /// The latest map_T_robot, the time it refers to [us] and its quality.
   void set_pose(const Pose2& map_T_robot, int64_t pose_utime, PoseQuality quality);
   /// One control period: the body twist to command now.

@@ -85,6 +85,24 @@ TEST(Navigator, EmptyGoalCancelsAndInvalidGoalIsAborted) {
   EXPECT_EQ(nav.status().reason, "invalid goal: waypoint 0 is not finite");
 }
 
+TEST(Navigator, RepublishedGoalDoesNotRestartTheMission) {
+  Navigator nav{NavigatorConfig{}};
+  NavGoal goal = goal_to(0.0, 0.0, 0.0);
+  goal.waypoints.push_back({1.0, 0.0, 0.0});
+  nav.set_goal(goal, kT0);
+  int64_t now = kT0;
+  for (int i = 0; i < 20; ++i) {  // at the first waypoint already: settles in 0.2 s
+    nav.set_pose({}, now, PoseQuality::kGood);
+    nav.update(now += kPeriod);
+  }
+  ASSERT_EQ(nav.status().waypoints_reached, 1);
+  EXPECT_FALSE(nav.set_goal(goal, now));
+  EXPECT_EQ(nav.status().waypoints_reached, 1);
+  goal.waypoints[1].x = 2.0;  // same id, new content: a new mission
+  EXPECT_TRUE(nav.set_goal(goal, now));
+  EXPECT_EQ(nav.status().waypoints_reached, 0);
+}
+
 TEST(Navigator, NoProgressAbortsAfterTheTimeout) {
   NavigatorConfig config;
   config.progress_timeout = 2.0;
