@@ -35,7 +35,8 @@ wait_running() {
   fail "$1 not RUNNING: $("$refloc" status "$1")"
 }
 
-"$refloc" --help | grep -q "restart NAME" || fail "--help"
+help="$("$refloc" --help)"
+grep -q "restart NAME" <<<"$help" || fail "--help"
 "$refloc" start || fail "start"
 [ -S "$REFLOC_RUN_DIR/supervisor.sock" ] || fail "no socket in $REFLOC_RUN_DIR"
 
@@ -62,12 +63,14 @@ echo "autorestart: robot_sim pid $old_pid -> $new_pid"
 "$refloc" restart robot_sim >/dev/null || fail "restart robot_sim"
 wait_running robot_sim
 [ "$(program_pid robot_sim)" != "$new_pid" ] || fail "restart did not replace the process"
-"$refloc" logs robot_sim | grep -q "started, pid" || fail "logs robot_sim"
+logs="$("$refloc" logs robot_sim)"
+grep -q "started, pid" <<<"$logs" || fail "logs robot_sim"
 
 [ -f "$REFLOC_LOG_DIR/refloc.0" ] || fail "lcm-logger wrote no $REFLOC_LOG_DIR/refloc.0"
 last_pid="$(program_pid robot_sim)"
 "$refloc" stop || fail "stop"
 [ ! -e "$REFLOC_RUN_DIR/supervisord.pid" ] || fail "supervisord pid file left behind"
 ! kill -0 "$last_pid" 2>/dev/null || fail "robot_sim still running after stop"
-"$build/bin/refloc-log" "$REFLOC_LOG_DIR/refloc.0" | grep -q "HEARTBEAT" || fail "the log has no HEARTBEAT"
+summary="$("$build/bin/refloc-log" "$REFLOC_LOG_DIR/refloc.0")"
+grep -q "HEARTBEAT" <<<"$summary" || fail "the log has no HEARTBEAT"
 echo "PASS"
