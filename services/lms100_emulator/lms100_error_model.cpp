@@ -68,6 +68,7 @@ Lms100ErrorModel parse_lms100_error_model(const JsonConfig& config, const std::s
   m.retro_rssi_drop_per_m = config.number(p + "/retro_rssi_drop_per_m", m.retro_rssi_drop_per_m, 0.0, 65534.0);
   m.retro_incidence_exponent =
       config.number(p + "/retro_incidence_exponent", m.retro_incidence_exponent, 0.0, 10.0);
+  m.retro_range_bias = config.number(p + "/retro_range_bias", m.retro_range_bias, -0.5, 0.5);
   m.tape_rssi_near = config.number(p + "/tape_rssi_near", m.tape_rssi_near, 0.0, 65534.0);
   m.tape_full_incidence =
       config.number(p + "/tape_full_incidence_deg", m.tape_full_incidence / kDegToRad, 0.0, 90.0) * kDegToRad;

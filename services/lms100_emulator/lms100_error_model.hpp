@@ -58,6 +58,9 @@ struct Lms100ErrorModel {
   double retro_rssi_near = 65000.0;         ///< [16-bit units]
   double retro_rssi_drop_per_m = 100.0;     ///< [16-bit units / m]
   double retro_incidence_exponent = 0.3;    ///< cos(incidence)^this [-]
+  /// Extra range on returns from retro-reflectors and tape: the saturated pulse's walk
+  /// error on some sensors (unknown for the LMS100, hence 0) [m].
+  double retro_range_bias = 0.0;
 
   // Flat reflective tape.
   double tape_rssi_near = 64000.0;          ///< [16-bit units]

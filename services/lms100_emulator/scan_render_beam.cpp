@@ -180,7 +180,8 @@ BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100
     for (int j = begin; j < end; ++j) {
       const int k = order[j];
       sum += energy[k];
-      weighted_range += energy[k] * hit[k].t;
+      const bool retro = hit[k].kind == HitKind::kReflector || hit[k].kind == HitKind::kTape;
+      weighted_range += energy[k] * (hit[k].t + (retro ? model.retro_range_bias : 0.0));
       if (energy[k] > energy[strongest]) strongest = k;
     }
     if (sum > 0.0 && sum >= model.rssi_at_detection_limit) {

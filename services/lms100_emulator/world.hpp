@@ -45,8 +45,8 @@ struct DrivableArea {
 };
 
 struct World {
-  /// Reflectors as they really stand (the map the localization uses, plus any
-  /// "unmapped_reflectors" of the world file, which carry ids the map lacks).
+  /// Reflectors as they really stand: the map the localization uses, with the world
+  /// file's map errors applied (moved and missing reflectors, unmapped ones added).
   ReflectorMap reflectors;
   /// Walls, obstacles and distractors flattened into segments.
   std::vector<WorldSegment> segments;

@@ -71,6 +71,29 @@ void read_unmapped_reflectors(const JsonConfig& config, const std::string& list,
   }
 }
 
+void read_map_errors(const JsonConfig& config, const std::string& pointer, World& world) {
+  auto& reflectors = world.reflectors.reflectors;
+  const std::string moved = pointer + "/moved_reflectors";
+  const size_t num_moved = config.array_size(moved, false);
+  for (size_t i = 0; i < num_moved; ++i) {
+    const std::string item = fmt::format("{}/{}", moved, i);
+    const long long id = config.required_integer(item + "/id", 0, 1000000000);
+    const int index = world.reflectors.index_of(static_cast<int>(id));
+    if (index < 0) config.fail(item + "/id", fmt::format("no reflector with id {} in the map", id));
+    reflectors[index].map_p_center.x() = config.required_number(item + "/x", -kMaxCoordinate_m, kMaxCoordinate_m);
+    reflectors[index].map_p_center.y() = config.required_number(item + "/y", -kMaxCoordinate_m, kMaxCoordinate_m);
+  }
+  const std::string missing = pointer + "/missing_reflector_ids";
+  const size_t num_missing = config.array_size(missing, false);
+  for (size_t i = 0; i < num_missing; ++i) {
+    const std::string item = fmt::format("{}/{}", missing, i);
+    const long long id = config.required_integer(item, 0, 1000000000);
+    const int index = world.reflectors.index_of(static_cast<int>(id));
+    if (index < 0) config.fail(item, fmt::format("no reflector with id {} in the map (or listed twice)", id));
+    reflectors.erase(reflectors.begin() + index);
+  }
+}
+
 void read_drivable_areas(const JsonConfig& config, const std::string& list, World& world) {
   const size_t n = config.array_size(list, false);
   for (size_t i = 0; i < n; ++i) {
@@ -106,6 +129,7 @@ World parse_world(const JsonConfig& config, const std::string& pointer, const st
   read_polylines(config, pointer + "/walls", false, 0.5, world);
   read_polylines(config, pointer + "/obstacles", false, 0.5, world);
   read_polylines(config, pointer + "/distractors", true, 0.05, world);
+  read_map_errors(config, pointer, world);
   read_unmapped_reflectors(config, pointer + "/unmapped_reflectors", world);
   read_drivable_areas(config, pointer + "/drivable_areas", world);
   return world;

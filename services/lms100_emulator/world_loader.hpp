@@ -14,10 +14,12 @@
 //     "distractors": [{"name": "door tape", "surface": "tape" | "metal",
 //                      "points": [[x,y],[x,y]], "closed": false, "remission": 0.05}],
 //     "unmapped_reflectors": [{"id": 900, "x": 3.0, "y": 4.0, "radius_m": 0.06}],
+//     "moved_reflectors": [{"id": 7, "x": 6.45, "y": 11.9}],     (stands elsewhere than mapped)
+//     "missing_reflector_ids": [12],                        (mapped, but not in the world)
 //     "drivable_areas": [{"x_min": 1, "y_min": 1, "x_max": 19, "y_max": 11}]
 //   }
 //
-// Only "map_file" is required; "name", "closed" (default false) and "remission"
+// The last three model map errors for robustness tests. Only "map_file" is required; "name", "closed" (default false) and "remission"
 // (defaults: walls/obstacles 0.5, tape 0.8, metal 0.05 for its diffuse part) are
 // optional. Coordinates are metres in the map frame.
 

@@ -82,6 +82,20 @@ TEST(ScanRenderer, SystematicOffsetShiftsEveryRange) {
   EXPECT_NEAR(scan.ranges[270], 4.03, 1e-4);
 }
 
+TEST(ScanRenderer, RetroRangeBiasShiftsReflectorsButNotWalls) {
+  World world = wall_world(6.0);
+  add_reflector(world, 1, 3.0, 0.0);
+  ScanRenderConfig config = noise_free_config();
+  std::mt19937_64 rng(1);
+  LaserScan plain;
+  LaserScan biased;
+  render_scan(world, Pose2{}, 0, config, rng, plain);
+  config.sensor.retro_range_bias = 0.02;
+  render_scan(world, Pose2{}, 0, config, rng, biased);
+  EXPECT_NEAR(biased.ranges[270] - plain.ranges[270], 0.02, 1e-4);
+  EXPECT_NEAR(biased.ranges[300] - plain.ranges[300], 0.0, 1e-6);  // +15 deg: the wall
+}
+
 TEST(ScanRenderer, ReflectorIsHitByAboutItsWidthOverPointSpacingBeams) {
   for (const double d : {1.5, 2.0, 3.0, 5.0, 8.0}) {
     World world = wall_world(d + 2.0);

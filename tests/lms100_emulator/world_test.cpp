@@ -183,6 +183,23 @@ TEST_F(WorldLoaderErrors, AValidWorldLoads) {
   EXPECT_DOUBLE_EQ(world.segments[0].remission, 0.5);
 }
 
+TEST_F(WorldLoaderErrors, MapErrorsMoveRemoveAndAddReflectors) {
+  const std::string path = write("world.json", R"({"map_file": "map.json",
+      "moved_reflectors": [{"id": 2, "x": 1.25, "y": 0.5}], "missing_reflector_ids": [3],
+      "unmapped_reflectors": [{"id": 9, "x": 2, "y": 2}]})");
+  const World world = load_world(path);
+  const ReflectorMap& r = world.reflectors;
+  ASSERT_EQ(r.reflectors.size(), 3u);
+  EXPECT_EQ(r.index_of(3), -1);
+  ASSERT_GE(r.index_of(2), 0);
+  EXPECT_EQ(r.reflectors[r.index_of(2)].map_p_center, Eigen::Vector2d(1.25, 0.5));
+  EXPECT_GE(r.index_of(9), 0);
+  EXPECT_THAT(error_of(R"({"map_file": "map.json", "missing_reflector_ids": [3, 3]})"),
+              AllOf(HasSubstr(world_path()), HasSubstr("/missing_reflector_ids/1"), HasSubstr("id 3")));
+  EXPECT_THAT(error_of(R"({"map_file": "map.json", "moved_reflectors": [{"id": 77, "x": 0, "y": 0}]})"),
+              AllOf(HasSubstr(world_path()), HasSubstr("/moved_reflectors/0/id")));
+}
+
 TEST_F(WorldLoaderErrors, MissingMapFileKey) {
   EXPECT_THAT(error_of(R"({"walls": []})"), AllOf(HasSubstr(world_path()), HasSubstr("/map_file: missing")));
 }
