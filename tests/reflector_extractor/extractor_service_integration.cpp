@@ -1,0 +1,140 @@
+// reflector_extractor as a real process over UDP multicast (run in a private network
+// namespace): LMS100_SCAN and ODOMETRY in, REFLECTORS out. Checks the message fields,
+// that the published centres are the library's, motion-compensated with the odometry
+// twist and the laser mount, and that a bad config file exits with code 2.
+
+#include "common/lcm_conversions.hpp"
+#include "common/robot_config.hpp"
+#include "reflector_extractor/extractor.hpp"
+#include "reflector_extractor/motion_compensation.hpp"
+#include "reflector_extractor/synthetic_scan.hpp"
+#include "tests/tools/child_process.hpp"
+#include "tests/tools/run_command.hpp"
+
+#include <gtest/gtest.h>
+#include <lcm/lcm-cpp.hpp>
+#include <refloc/laser_scan_t.hpp>
+#include <refloc/odometry_t.hpp>
+#include <refloc/reflector_detections_t.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <optional>
+
+namespace refloc {
+namespace {
+
+const char* kUrl = "udpm://239.255.76.67:7667?ttl=0";
+const std::string kSource = REFLOC_SOURCE_DIR;
+const std::string kBin = std::string(REFLOC_BINARY_DIR) + "/bin/";
+
+class ExtractorService : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(lcm_.good());
+    lcm_.subscribe("REFLECTORS", &ExtractorService::on_reflectors, this);
+    ASSERT_TRUE(service_.start({kBin + "reflector_extractor", std::string("--lcm-url=") + kUrl, "--config",
+                                kSource + "/deploy/config/reflector_extractor.json", "--robot",
+                                kSource + "/deploy/config/robot.json"}));
+  }
+
+  void on_reflectors(const lcm::ReceiveBuffer*, const std::string&, const reflector_detections_t* msg) {
+    received_.push_back(*msg);
+  }
+
+  /// Publish msg on channel every 200 ms (the service may still be starting) until the
+  /// REFLECTORS for utime is back.
+  template <class Message>
+  std::optional<reflector_detections_t> exchange(const std::string& channel, const Message& msg, int64_t utime) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
+    auto next_publish = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() < deadline) {
+      if (std::chrono::steady_clock::now() >= next_publish) {
+        lcm_.publish(channel, &msg);
+        next_publish += std::chrono::milliseconds(200);
+      }
+      lcm_.handleTimeout(20);
+      for (const reflector_detections_t& r : received_) {
+        if (r.utime == utime) return r;
+      }
+    }
+    return std::nullopt;
+  }
+
+  /// The scan's REFLECTORS, with odometry received by the service before the scan.
+  std::optional<reflector_detections_t> exchange(const laser_scan_t& scan, const odometry_t& odometry) {
+    // Until a first scan comes back the service may not be subscribed yet.
+    laser_scan_t warmup = scan;
+    warmup.utime -= 1'000'000;
+    if (!exchange("LMS100_SCAN", warmup, warmup.utime)) return std::nullopt;
+    lcm_.publish("ODOMETRY", &odometry);
+    return exchange("LMS100_SCAN", scan, scan.utime);
+  }
+
+  lcm::LCM lcm_{kUrl};
+  testing::ChildProcess service_;
+  std::vector<reflector_detections_t> received_;
+};
+
+TEST_F(ExtractorService, PublishesMotionCompensatedDetectionsOfEachScan) {
+  SyntheticScene scene;
+  for (double bearing_deg : {-100.0, 0.0, 100.0}) {
+    SyntheticCylinder c;
+    c.laser_p_center = 2.0 * Eigen::Vector2d(std::cos(bearing_deg * M_PI / 180.0), std::sin(bearing_deg * M_PI / 180.0));
+    scene.cylinders.push_back(c);
+  }
+  std::mt19937 rng(4);
+  SyntheticScanConfig scan_config;
+  scan_config.utime = 5'000'000'000;
+  const LaserScan scan = render_synthetic_scan(scene, scan_config, rng);
+
+  odometry_t odometry{};
+  odometry.utime = scan.utime;
+  odometry.vx = 1.0;
+  odometry.wz = 0.5;
+
+  const laser_scan_t message = to_lcm(scan);
+  const auto out = exchange(message, odometry);
+  ASSERT_TRUE(out.has_value());
+  ASSERT_EQ(out->nreflectors, 3);
+  ASSERT_EQ(out->reflectors.size(), 3u);
+  EXPECT_EQ(out->clusters_considered, 3);
+  EXPECT_EQ(out->clusters_rejected, 0);
+
+  // The same computation in-process on what went over the wire (angles are float there):
+  // the service must publish exactly this.
+  LaserScan received;
+  ASSERT_TRUE(from_lcm(message, received));
+  ReflectorExtractor extractor;
+  std::vector<ReflectorDetection> expected = extractor.extract(received);
+  const Pose2 robot_T_laser = load_robot_config(kSource + "/deploy/config/robot.json").robot_T_laser;
+  compensate_motion(expected, scan.utime, BodyTwist{1.0, 0.0, 0.5}, robot_T_laser);
+  ASSERT_EQ(expected.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    const reflector_t& r = out->reflectors[i];
+    EXPECT_NEAR(r.x, expected[i].laser_p_center.x(), 1e-9);
+    EXPECT_NEAR(r.y, expected[i].laser_p_center.y(), 1e-9);
+    EXPECT_NEAR(r.covariance[1], expected[i].covariance(0, 1), 1e-15);
+    EXPECT_EQ(r.utime, expected[i].utime);
+    EXPECT_EQ(r.nbeams, expected[i].num_beams);
+    EXPECT_GT(r.utime, scan.utime);
+  }
+  // The reflector straight ahead is seen 7.5 ms after the first beam, at 1 m/s and
+  // 0.5 rad/s: it moved 7.5 mm closer and 7.5 mm to the left (about 1 cm).
+  ReflectorExtractor raw_extractor;
+  const std::vector<ReflectorDetection>& raw = raw_extractor.extract(received);
+  EXPECT_NEAR((expected[1].laser_p_center - raw[1].laser_p_center).norm(), 0.0106, 0.001);
+  EXPECT_EQ(service_.stop(), 0);
+}
+
+TEST(ExtractorServiceConfig, MisspeltKeyExitsWithCode2NamingTheKey) {
+  const std::string path = std::string(REFLOC_BINARY_DIR) + "/reflector_extractor_bad_config.json";
+  std::ofstream(path) << R"({"mode": "default", "reflector_radius": 0.06})";
+  const auto result = testing::run_command(kBin + "reflector_extractor --lcm-url=" + kUrl + " --config " + path);
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.output.find("/reflector_radius: unknown key"), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace refloc
