@@ -78,6 +78,7 @@ Lms100ErrorModel parse_lms100_error_model(const JsonConfig& config, const std::s
   m.metal_rssi_peak = config.number(p + "/metal_rssi_peak", m.metal_rssi_peak, 0.0, 65534.0);
   m.metal_lobe_width =
       config.number(p + "/metal_lobe_width_deg", m.metal_lobe_width / kDegToRad, 0.1, 90.0) * kDegToRad;
+  m.rssi_coverage_exponent = config.number(p + "/rssi_coverage_exponent", m.rssi_coverage_exponent, 0.0, 2.0);
   m.rssi_sigma = config.number(p + "/rssi_sigma", m.rssi_sigma, 0.0, 10000.0);
   m.dazzle_range = config.number(p + "/dazzle_range", m.dazzle_range, 0.0, 10.0);
   return m;

@@ -18,8 +18,16 @@
 //    falling linearly to nothing at tape_cutoff_incidence.
 //  - metal: a specular lobe exp(-(incidence / metal_lobe_width)^2) * metal_rssi_peak,
 //    or its weak diffuse part, whichever is brighter.
-//  - partial hits: a beam's RSSI is the beam-profile weighted sum over the parts
-//    of the spot that hit each surface, i.e. proportional to coverage.
+//  - partial hits: RSSI = (profile-weighted mean full-coverage RSSI of the parts
+//    of the spot that returned) * c^rssi_coverage_exponent, c = the covered share
+//    of the spot. Default exponent 0.5: edge hits are clearly dimmer (c = 0.25 ->
+//    half), yet a reflector stays bright when the spot outgrows it (beyond ~8 m
+//    the spot is wider than 120 mm, c < 1 even at the centre), as the brief's
+//    "falls off only mildly with range" and the sensor's log scale suggest.
+//    Exponent 1 = RSSI strictly proportional to coverage; then the paper's
+//    threshold (8-bit 180) loses reflectors beyond ~8 m (bright beams per reflector
+//    at 2/5/10/15 m: 5.7/2.0/0.6/0.0 with 1, 6.0/2.3/1.1/0.55 with 0.5). No LMS1xx
+//    reflector RSSI sample exists (§3.4): this is an assumption to check.
 
 #include <string>
 
@@ -70,6 +78,9 @@ struct Lms100ErrorModel {
   // Polished metal.
   double metal_rssi_peak = 64000.0;         ///< at normal incidence [16-bit units]
   double metal_lobe_width = 0.09;           ///< 1/e half-width of the specular lobe [rad] (5 deg)
+
+  /// RSSI of a partial hit = mean RSSI of the covered part * coverage^this [-]; 1 = proportional.
+  double rssi_coverage_exponent = 0.5;
 
   // Reported values.
   double rssi_sigma = 150.0;                ///< Gaussian noise on RSSI [16-bit units]

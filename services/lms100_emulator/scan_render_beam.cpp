@@ -175,18 +175,24 @@ BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100
     int end = begin + 1;
     while (end < m && hit[order[end]].t - hit[order[end - 1]].t <= model.echo_merge_distance) ++end;
     double sum = 0.0;
+    double covered = 0.0;
     double weighted_range = 0.0;
     int strongest = order[begin];
     for (int j = begin; j < end; ++j) {
       const int k = order[j];
       sum += energy[k];
+      covered += profile.weight[k];
       const bool retro = hit[k].kind == HitKind::kReflector || hit[k].kind == HitKind::kTape;
       weighted_range += energy[k] * (hit[k].t + (retro ? model.retro_range_bias : 0.0));
       if (energy[k] > energy[strongest]) strongest = k;
     }
-    if (sum > 0.0 && sum >= model.rssi_at_detection_limit) {
+    // Exponent 1: RSSI proportional to coverage; below 1 partial hits dim less (log-like).
+    const double rssi = model.rssi_coverage_exponent == 1.0 || covered <= 0.0
+                            ? sum
+                            : sum / covered * std::pow(covered, model.rssi_coverage_exponent);
+    if (sum > 0.0 && rssi >= model.rssi_at_detection_limit) {
       echo.range = weighted_range / sum;
-      echo.rssi = sum;
+      echo.rssi = rssi;
       echo.truth.kind = hit[strongest].kind;
       echo.truth.id = hit[strongest].id;
       echo.truth.range = echo.range;

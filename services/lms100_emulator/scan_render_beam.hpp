@@ -9,8 +9,9 @@
 // u_k evenly spaced in [-1, 1], weight exp(-2 u_k^2) (normalised). Each sub-ray's
 // return carries weight * full-coverage RSSI of the surface it hits. Returns
 // closer than echo_merge_distance form one echo: RSSI = their sum (so partial
-// hits are dimmer in proportion to coverage), range = their RSSI-weighted mean
-// (a mixed pixel between fore- and background, pulled towards the brighter one).
+// hits are dimmer in proportion to coverage; rssi_coverage_exponent < 1 softens
+// that), range = their RSSI-weighted mean (a mixed pixel between fore- and
+// background, pulled towards the brighter one).
 // The sensor reports the nearest echo whose RSSI reaches rssi_at_detection_limit.
 
 #include "common/se2.hpp"

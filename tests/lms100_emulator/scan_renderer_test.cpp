@@ -154,6 +154,25 @@ TEST(ScanRenderer, EdgeBeamsOfAReflectorAreDimmerThanItsCentre) {
   EXPECT_LT(reflector_rssi.back(), 0.8 * reflector_rssi[reflector_rssi.size() / 2]);
 }
 
+TEST(ScanRenderer, PartialHitRssiFollowsCoverageToTheConfiguredPower) {
+  // Tape whose edge cuts the centre beam's spot; nothing behind it.
+  World world;
+  add_polyline(world, {{4.0, 0.001}, {4.0, 1.0}}, false, SurfaceKind::kReflectiveTape, 0.8);
+  for (const double exponent : {1.0, 0.5}) {
+    ScanRenderConfig config = noise_free_config();
+    config.sensor.rssi_coverage_exponent = exponent;
+    ScanRenderer renderer(config);
+    std::mt19937_64 rng(1);
+    LaserScan scan;
+    renderer.render(world, Pose2{}, 0, rng, scan);
+    const double coverage = renderer.truth()[270].coverage;
+    ASSERT_GT(coverage, 0.3);
+    ASSERT_LT(coverage, 0.6);
+    const double full = tape_rssi(config.sensor, 0.8, 1.0, 4.0);
+    EXPECT_NEAR(scan.rssi[270], full * std::pow(coverage, exponent), 300) << "exponent " << exponent;
+  }
+}
+
 TEST(ScanRenderer, MixedPixelsAppearBetweenForegroundAndBackgroundAtAnEdge) {
   World world = wall_world(3.3);
   // A plate 0.3 m in front of the wall, its edge on the beam axis.
