@@ -159,9 +159,20 @@ BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100
   std::array<int, kMaxBeamSubrays> order;
   std::array<double, kMaxBeamSubrays> energy;
   int m = 0;
+  int previous = -1;
+  double previous_rssi = 0.0;
   for (int k = 0; k < n; ++k) {
     if (hit[k].kind == HitKind::kNone) continue;
-    energy[k] = profile.weight[k] * full_rssi(model, hit[k]);
+    // Neighbouring sub-rays on the same flat segment differ by microradians of
+    // incidence and millimetres of range: reuse the RSSI (log10 and cos are the
+    // renderer's hottest calls). Cylinders vary across the spot and are exact.
+    const bool same_segment = previous >= 0 && hit[k].kind != HitKind::kReflector &&
+                              hit[k].kind == hit[previous].kind && hit[k].id == hit[previous].id &&
+                              std::abs(hit[k].t - hit[previous].t) < 0.02;
+    const double rssi = same_segment ? previous_rssi : full_rssi(model, hit[k]);
+    previous = k;
+    previous_rssi = rssi;
+    energy[k] = profile.weight[k] * rssi;
     int j = m++;
     while (j > 0 && hit[order[j - 1]].t > hit[k].t) {
       order[j] = order[j - 1];
