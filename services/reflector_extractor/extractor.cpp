@@ -148,8 +148,16 @@ void ReflectorExtractor::process_cluster_default(const LaserScan& scan, const Be
       return;
   }
   const double range = fit.center.norm();
-  if (config_.angle_sigma > 0.0 && range > 0.0) {
-    const Eigen::Vector2d across(-fit.center.y() / range, fit.center.x() / range);
+  if (range > 0.0) {
+    const Eigen::Vector2d along = fit.center / range;
+    const Eigen::Vector2d across(-along.y(), along.x());
+    if (beams_.size() == 1) {
+      // One beam (min_beams = 1, far reflectors): the centre is somewhere across the beam
+      // step, uniformly: the fit's rank-deficient information says nothing useful there.
+      const double step = std::abs(scan.angle_increment) * range;
+      const double sigma_r = config_.clustering.range_sigma;
+      fit.covariance = sigma_r * sigma_r * along * along.transpose() + step * step / 12.0 * across * across.transpose();
+    }
     const double sigma = config_.angle_sigma * range;
     fit.covariance += sigma * sigma * across * across.transpose();
   }

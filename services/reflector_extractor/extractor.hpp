@@ -23,7 +23,9 @@ struct ExtractorConfig {
   double energy_threshold_8bit = 180.0;  ///< paper §3.2 [RSSI on the 8-bit scale]
   AdaptiveBreakpointConfig clustering;   ///< lambda 10 deg, sigma_r 0.012 m (also the fit's range noise)
   double reflector_radius = 0.06;        ///< known cylinder radius [m]
-  int min_beams = 2;                     ///< smaller clusters are not reflectors
+  /// Smaller clusters are not reflectors. 1 keeps far reflectors (one bright beam beyond
+  /// ~7 m on the LMS100) at the price of no shape test for them.
+  int min_beams = 2;
 
   // Paper mode (§3.3-3.4).
   int paper_drop_points = 1;  ///< first and last n points left out of d-bar

@@ -100,6 +100,21 @@ TEST(ExtractorOnEmulatorScans, CylindersAreFoundUpTo4p5mAndTheCurveBeyondIsRepor
   }
 }
 
+TEST(ExtractorOnEmulatorScans, MinBeams1ExtendsTheRangeWithConsistentCovariance) {
+  ExtractorConfig config;
+  config.min_beams = 1;
+  for (double range : {7.5, 9.0, 10.5, 12.0, 13.5, 15.0}) {
+    const Outcome o = run(Target::kCylinder, range, 200, config, 12);
+    std::printf("min_beams 1, cylinder %5.1f m: recall %5.1f %%  rms %5.1f mm  NEES %.2f\n", range,
+                100.0 * o.accepted, 1e3 * o.rms_error, o.mean_nees);
+    if (range <= 10.5) {
+      EXPECT_GE(o.accepted, 0.8) << range;
+      EXPECT_LT(o.rms_error, 0.04) << range;
+      EXPECT_LT(o.mean_nees, 3.0) << range;
+    }
+  }
+}
+
 TEST(ExtractorOnEmulatorScans, KnownRadiusFitBeatsThePaperFitAt1To3m) {
   ExtractorConfig paper = ExtractorConfig::paper();
   paper.paper_roundness.offset = 1.0;  // accept all: compare centres, not roundness lines

@@ -110,6 +110,26 @@ TEST(ReflectorExtractor, ClustersOfOneBeamAreRejectedByDefault) {
   EXPECT_GT(single, 0);
 }
 
+TEST(ReflectorExtractor, WithMinBeams1AFarSingleBeamGetsABeamStepWideCovariance) {
+  SyntheticScene scene;
+  scene.cylinders = {test::cylinder_at(14.0, 0.3)};
+  ExtractorConfig config;
+  config.min_beams = 1;
+  ReflectorExtractor extractor(config);
+  for (uint32_t seed = 0; seed < 20; ++seed) {
+    const std::vector<ReflectorDetection>& detections = extractor.extract(render(scene, seed));
+    if (detections.empty() || detections[0].num_beams != 1) continue;
+    const ReflectorDetection& d = detections[0];
+    const Eigen::Vector2d along = d.laser_p_center.normalized();
+    const Eigen::Vector2d across(-along.y(), along.x());
+    const double step = 0.5 * kDeg * d.range;
+    EXPECT_NEAR(along.dot(d.covariance * along), 0.012 * 0.012, 1e-9);
+    EXPECT_NEAR(across.dot(d.covariance * across), step * step / 12.0 + std::pow(0.002 * d.range, 2), 1e-9);
+    return;
+  }
+  FAIL() << "no single-beam detection in 20 scans";
+}
+
 TEST(ReflectorExtractor, ExtractDoesNotReallocateItsOutputOnceWarm) {
   SyntheticScene scene;
   for (int k = 0; k < 8; ++k) scene.cylinders.push_back(test::cylinder_at(2.0 + k, (-100.0 + 25.0 * k) * kDeg));
