@@ -111,6 +111,24 @@ TEST(ScanRenderer, ReflectorIsHitByAboutItsWidthOverPointSpacingBeams) {
   }
 }
 
+TEST(ScanRenderer, FullyCoveredReflectorPointsLieOnItsNearSurface) {
+  World world = wall_world(6.0);
+  add_reflector(world, 1, 2.5, 0.4);
+  ScanRenderer renderer(noise_free_config());
+  std::mt19937_64 rng(1);
+  LaserScan scan;
+  renderer.render(world, Pose2{}, 0, rng, scan);
+  int checked = 0;
+  for (size_t i = 0; i < scan.ranges.size(); ++i) {
+    const BeamTruth& t = renderer.truth()[i];
+    if (t.kind != HitKind::kReflector || t.coverage < 0.99) continue;
+    const Eigen::Vector2d p = scan.ranges[i] * Eigen::Vector2d(std::cos(scan.beam_angle(i)), std::sin(scan.beam_angle(i)));
+    EXPECT_NEAR((p - Eigen::Vector2d(2.5, 0.4)).norm(), 0.06, 0.003) << "beam " << i;
+    ++checked;
+  }
+  EXPECT_GE(checked, 3);
+}
+
 TEST(ScanRenderer, ReflectorBeamsAreBrightAndWallBeamsDim) {
   World world = wall_world(6.0);
   add_reflector(world, 1, 3.0, 0.0);

@@ -32,6 +32,19 @@ void BM_RenderStaticScanDemoHall(benchmark::State& state) {
 }
 BENCHMARK(BM_RenderStaticScanDemoHall)->Arg(1)->Arg(5)->Arg(11)->Arg(21)->Unit(benchmark::kMicrosecond);
 
+void BM_RenderStaticScanDemoHallBruteForce(benchmark::State& state) {
+  ScanRenderer renderer;
+  renderer.set_brute_force(true);
+  std::mt19937_64 rng(1);
+  LaserScan scan;
+  const Pose2 pose{6.7, 2.2, 0.3};
+  for (auto _ : state) {
+    renderer.render(demo_world(), pose, 0, rng, scan);
+    benchmark::DoNotOptimize(scan.ranges.data());
+  }
+}
+BENCHMARK(BM_RenderStaticScanDemoHallBruteForce)->Unit(benchmark::kMicrosecond);
+
 void BM_RenderMovingScanDemoHall(benchmark::State& state) {
   ScanRenderer renderer;
   std::mt19937_64 rng(1);
