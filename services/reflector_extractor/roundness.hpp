@@ -17,11 +17,12 @@ double paper_roundness_index(const std::vector<FitBeam>& beams, const Eigen::Vec
 /// The paper's acceptance line d-bar <= offset + slope * range (the fitted line raised by
 /// 30 mm in §3.4).
 struct RoundnessLine {
-  // From `refloc-calibrate-roundness --scans 5` on the LMS100 emulator's scans (fitted
-  // 9.9 mm - 1.8 mm/m, raised 30 mm). d-bar falls with distance there: fewer beams, so
-  // the free circle fits them ever more closely (three beams: d-bar = 0).
-  double offset = 0.0399;  ///< [m]
-  double slope = -0.0018;  ///< [m per m of range]
+  // From `refloc-calibrate-roundness --scans 5` on the LMS100 emulator's scans (emulator
+  // d564682: fitted 8.0 mm - 0.46 mm/m, raised 30 mm). Unlike the paper's Figure 9, d-bar
+  // does not grow with distance here: fewer beams far away, so the free circle fits them
+  // ever more closely (three beams with one dropped each side: d-bar = 0).
+  double offset = 0.0380;    ///< [m]
+  double slope = -0.00046;   ///< [m per m of range]
   bool accepts(double d_bar, double range) const { return d_bar <= offset + slope * range; }
 };
 

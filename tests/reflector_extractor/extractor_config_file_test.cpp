@@ -1,0 +1,56 @@
+#include "reflector_extractor/extractor_config_file.hpp"
+
+#include "common/json_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace refloc {
+namespace {
+
+TEST(ExtractorConfigFile, DeployedFileIsValidAndEqualsTheCodeDefaults) {
+  const JsonConfig file = JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/reflector_extractor.json");
+  const ExtractorServiceConfig c = parse_extractor_service_config(file);
+  EXPECT_NO_THROW(file.reject_unknown_keys());
+  const ExtractorConfig defaults;
+  EXPECT_EQ(c.extractor.mode, ExtractorConfig::Mode::kDefault);
+  EXPECT_DOUBLE_EQ(c.extractor.energy_threshold_8bit, defaults.energy_threshold_8bit);
+  EXPECT_DOUBLE_EQ(c.extractor.reflector_radius, 0.06);
+  EXPECT_NEAR(c.extractor.clustering.lambda, defaults.clustering.lambda, 1e-12);
+  EXPECT_DOUBLE_EQ(c.extractor.paper_roundness.offset, defaults.paper_roundness.offset);
+  EXPECT_DOUBLE_EQ(c.extractor.paper_roundness.slope, defaults.paper_roundness.slope);
+  EXPECT_DOUBLE_EQ(c.extractor.angle_sigma, defaults.angle_sigma);
+  EXPECT_DOUBLE_EQ(c.extractor.fit.min_incidence_cos, defaults.fit.min_incidence_cos);
+  EXPECT_DOUBLE_EQ(c.extractor.roundness.flat_chi2_margin, defaults.roundness.flat_chi2_margin);
+  EXPECT_TRUE(c.motion_compensation);
+  EXPECT_EQ(c.input_channel, "LMS100_SCAN");
+  EXPECT_EQ(c.output_channel, "REFLECTORS");
+}
+
+TEST(ExtractorConfigFile, PaperModeStartsFromThePaperPreset) {
+  const JsonConfig file(nlohmann::json{{"mode", "paper"}, {"clustering", {{"lambda_deg", 15.0}}}}, "test");
+  const ExtractorServiceConfig c = parse_extractor_service_config(file);
+  EXPECT_EQ(c.extractor.mode, ExtractorConfig::Mode::kPaper);
+  EXPECT_EQ(c.extractor.clustering.max_gap_beams, -1);
+  EXPECT_EQ(c.extractor.min_beams, 3);
+  EXPECT_NEAR(c.extractor.clustering.lambda, 15.0 * M_PI / 180.0, 1e-12);
+}
+
+TEST(ExtractorConfigFile, OutOfRangeValueNamesItsPointer) {
+  const JsonConfig file(nlohmann::json{{"default", {{"fit", {{"min_incidence_cos", 2.0}}}}}}, "x.json");
+  try {
+    parse_extractor_service_config(file);
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("x.json: /default/fit/min_incidence_cos"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ExtractorConfigFile, UnknownModeIsRejected) {
+  const JsonConfig file(nlohmann::json{{"mode", "fast"}}, "x.json");
+  EXPECT_THROW(parse_extractor_service_config(file), ConfigError);
+}
+
+}  // namespace
+}  // namespace refloc
