@@ -1,5 +1,5 @@
-// libFuzzer entry: arbitrary bytes through the CoLa-A splitter, then every
-// payload through the LMDscandata parser, the LaserScan conversion and the
+// libFuzzer entry: arbitrary bytes through the CoLa-B decoder and the CoLa-A
+// splitter, then every CoLa-A payload through the LMDscandata parser, the LaserScan conversion and the
 // reply checks. The data is also parsed as one payload directly, so the parser
 // sees inputs that contain neither STX nor ETX.
 
@@ -11,6 +11,7 @@
 #include "common/laser_scan.hpp"
 #include "lms100_driver/cola_a_commands.hpp"
 #include "lms100_driver/cola_a_splitter.hpp"
+#include "lms100_driver/cola_b_scandata_parser.hpp"
 #include "lms100_driver/lmd_scandata_parser.hpp"
 #include "lms100_driver/scan_conversion.hpp"
 
@@ -32,7 +33,12 @@ void parse_payload(std::string_view payload, refloc::LmdScanData& data, refloc::
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   refloc::LmdScanData parsed;
   refloc::LaserScan scan;
-  parse_payload(std::string_view(reinterpret_cast<const char*>(data), size), parsed, scan);
+  const std::string_view whole(reinterpret_cast<const char*>(data), size);
+  parse_payload(whole, parsed, scan);
+  // The same bytes as a CoLa-B frame and as a CoLa-B payload.
+  std::string_view binary_payload;
+  if (refloc::unframe_cola_b(whole, binary_payload).ok()) (void)refloc::parse_lmd_scandata_cola_b(binary_payload, parsed);
+  if (refloc::parse_lmd_scandata_cola_b(whole, parsed).ok()) (void)refloc::to_laser_scan(parsed, scan);
 
   refloc::ColaASplitter splitter(4096);
   // Feed in two pieces so split reads are exercised too.
