@@ -45,9 +45,16 @@ double metal_rssi(const Lms100ErrorModel& model, double remission, double cos_in
   return std::max(specular, diffuse_rssi(model, remission, cos_incidence, range));
 }
 
+double range_sigma_for(const Lms100ErrorModel& model, double rssi) {
+  if (model.rssi_per_decade <= 0.0) return model.range_sigma;
+  const double weakness = std::clamp(1.0 - (rssi - model.rssi_at_detection_limit) / model.rssi_per_decade, 0.0, 1.0);
+  return model.range_sigma * (1.0 + (model.weak_echo_sigma_factor - 1.0) * weakness);
+}
+
 Lms100ErrorModel parse_lms100_error_model(const JsonConfig& config, const std::string& p) {
   Lms100ErrorModel m;
   m.range_sigma = config.number(p + "/range_sigma", m.range_sigma, 0.0, 1.0);
+  m.weak_echo_sigma_factor = config.number(p + "/weak_echo_sigma_factor", m.weak_echo_sigma_factor, 1.0, 10.0);
   m.range_offset = config.number(p + "/range_offset", m.range_offset, -1.0, 1.0);
   m.range_min = config.number(p + "/range_min", m.range_min, 0.0, 10.0);
   m.range_max = config.number(p + "/range_max", m.range_max, m.range_min + 0.01, 100.0);

@@ -40,6 +40,9 @@ namespace refloc::sim {
 struct Lms100ErrorModel {
   // Range.
   double range_sigma = 0.012;   ///< statistical error, 1 sigma Gaussian [m] (SICK: 12 mm typical)
+  /// range_sigma multiplier at the detection limit [-] (SICK: 20 mm maximum / 12 mm typical);
+  /// echoes within one decade of energy above the limit blend linearly down to 1.
+  double weak_echo_sigma_factor = 20.0 / 12.0;
   double range_offset = 0.0;    ///< systematic error added to every range [m] (SICK: up to +-30 mm)
   double range_min = 0.05;      ///< nearer echoes are reported as no echo (0) [m]
   double range_max = 20.0;      ///< farther echoes are reported as no echo (0) [m]
@@ -102,6 +105,9 @@ double retro_reflector_rssi(const Lms100ErrorModel& model, double cos_incidence,
 double tape_rssi(const Lms100ErrorModel& model, double remission, double cos_incidence, double range);
 /// RSSI of polished metal fully covering the spot [16-bit units].
 double metal_rssi(const Lms100ErrorModel& model, double remission, double cos_incidence, double range);
+
+/// Range noise, 1 sigma, of an echo with this RSSI [m].
+double range_sigma_for(const Lms100ErrorModel& model, double rssi);
 
 /// Read the model from an object at pointer; absent keys keep the defaults. Angles
 /// are in degrees in the file (keys *_deg), lengths in metres, RSSI in 16-bit units.

@@ -73,6 +73,28 @@ TEST(ScanRenderer, BeamStraightAtWallReturnsItsDistanceWithinNoise) {
   EXPECT_NEAR(sigma, 0.012, 0.002);
 }
 
+TEST(ScanRenderer, WeakEchoesAreNoisierUpToTwentyMillimetres) {
+  const Lms100ErrorModel m;
+  EXPECT_NEAR(range_sigma_for(m, m.rssi_at_detection_limit), 0.020, 1e-12);
+  EXPECT_NEAR(range_sigma_for(m, m.rssi_at_detection_limit + m.rssi_per_decade), 0.012, 1e-12);
+  EXPECT_NEAR(range_sigma_for(m, 60000.0), 0.012, 1e-12);
+  // 10 % remission at 17 m is just above the detection limit.
+  const World world = wall_world(17.0, 0.10);
+  ScanRenderer renderer;
+  std::mt19937_64 rng(3);
+  LaserScan scan;
+  std::vector<double> centre;
+  for (int k = 0; k < 400; ++k) {
+    renderer.render(world, Pose2{}, 0, rng, scan);
+    if (scan.ranges[270] > 0.0f) centre.push_back(scan.ranges[270]);
+  }
+  ASSERT_GT(centre.size(), 390u);
+  const double mean = std::accumulate(centre.begin(), centre.end(), 0.0) / centre.size();
+  double var = 0.0;
+  for (double r : centre) var += (r - mean) * (r - mean);
+  EXPECT_NEAR(std::sqrt(var / (centre.size() - 1)), 0.0195, 0.0025);
+}
+
 TEST(ScanRenderer, SystematicOffsetShiftsEveryRange) {
   ScanRenderConfig config = noise_free_config();
   config.sensor.range_offset = 0.03;
