@@ -1,7 +1,10 @@
 #include "lms100_emulator/scan_renderer.hpp"
 
+#include "common/json_config.hpp"
+
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -50,6 +53,37 @@ TEST(ScanRenderer, FillsTheLaserScanWithLms100Geometry) {
   EXPECT_NEAR(scan.scan_period, 0.02, 1e-12);
   EXPECT_NEAR(scan.beam_angle(540), 135.0 * kDeg, 1e-9);
   EXPECT_EQ(scan.beam_utime(540), 1'000'000 + 15'000);  // 540 beams at 27.78 us
+}
+
+TEST(ScanRenderer, ConfigFileSelects25HzQuarterDegreeScans) {
+  const JsonConfig file(nlohmann::json::parse(R"({"render": {
+      "num_beams": 1081, "start_angle_deg": -135, "angle_increment_deg": 0.25,
+      "scan_frequency_hz": 25, "beam_rate_hz": 36000, "rssi_bits": 8,
+      "sensor": {"range_sigma": 0.015, "weak_echo_sigma_factor": 1.5, "range_offset": 0.01,
+                 "range_min": 0.05, "range_max": 18, "quantize_to_mm": true, "beam_divergence": 0.015,
+                 "beam_exit_diameter": 0.008, "beam_subrays": 7, "echo_merge_distance": 0.3,
+                 "detection_limit_remission": 0.1, "detection_limit_range": 18,
+                 "rssi_at_detection_limit": 1000, "rssi_per_decade": 7000, "diffuse_rssi_max": 30000,
+                 "max_incidence_deg": 87, "retro_rssi_near": 65000, "retro_rssi_drop_per_m": 100,
+                 "retro_incidence_exponent": 0.3, "retro_range_bias": 0.0, "tape_rssi_near": 64000,
+                 "tape_full_incidence_deg": 40, "tape_cutoff_incidence_deg": 75, "metal_rssi_peak": 64000,
+                 "metal_lobe_width_deg": 5, "rssi_coverage_exponent": 0.5, "rssi_sigma": 100,
+                 "dazzle_range": 0.1}}})"),
+                        "render.json");
+  const ScanRenderConfig config = parse_scan_render_config(file, "/render");
+  EXPECT_NO_THROW(file.reject_unknown_keys());  // every key above is read
+  EXPECT_EQ(config.sensor.beam_subrays, 7);
+  EXPECT_NEAR(config.sensor.metal_lobe_width, 5 * kDeg, 1e-12);
+  EXPECT_NEAR(config.sensor.range_max, 18.0, 1e-12);
+  std::mt19937_64 rng(1);
+  LaserScan scan;
+  render_scan(wall_world(5.0), Pose2{}, 0, config, rng, scan);
+  ASSERT_EQ(scan.ranges.size(), 1081u);
+  EXPECT_EQ(scan.rssi_bits, 8);
+  EXPECT_NEAR(scan.scan_period, 0.04, 1e-12);
+  EXPECT_EQ(scan.beam_utime(1080), 30'000);
+  EXPECT_NEAR(scan.ranges[540], 5.01, 0.08);
+  EXPECT_LE(*std::max_element(scan.rssi.begin(), scan.rssi.end()), 255);
 }
 
 TEST(ScanRenderer, BeamStraightAtWallReturnsItsDistanceWithinNoise) {
