@@ -100,6 +100,18 @@ TEST(World, PaperCellTable1PositionsSeeAtLeastFourReflectors) {
   }
 }
 
+TEST(World, SymmetricWorldShowsAtLeastFourReflectorsEverywhereDrivable) {
+  const World world = load_world(kConfigDir + "world_symmetric.json");
+  const auto grid = drivable_grid(world, 0.25, 0.4);
+  ASSERT_GT(grid.size(), 400u);
+  for (const Eigen::Vector2d& p : grid) {
+    for (double heading = -M_PI; heading < M_PI; heading += M_PI / 4) {
+      EXPECT_GE(visible_reflector_ids(world, Pose2{p.x(), p.y(), heading}, 15.0, 135.0 * kDeg).size(), 4u)
+          << "at (" << p.x() << ", " << p.y() << ") heading " << heading;
+    }
+  }
+}
+
 TEST(World, SymmetricWorldLooksTheSameAfterAHalfTurn) {
   const World world = load_world(kConfigDir + "world_symmetric.json");
   const Eigen::Vector2d centre(5.0, 3.0);
