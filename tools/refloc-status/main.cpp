@@ -12,6 +12,7 @@
 #include <lcm/lcm-cpp.hpp>
 #include <refloc/heartbeat_t.hpp>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <memory>
