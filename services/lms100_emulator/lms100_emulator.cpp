@@ -304,18 +304,24 @@ Lms100Emulator::Lms100Emulator(const Lms100EmulatorConfig& config, ScanSource so
   faults_.set_settings(config.faults);
 }
 
-Lms100Emulator::~Lms100Emulator() { stop(); }
+Lms100Emulator::~Lms100Emulator() {
+  stop();
+  faults_.set_change_listener(nullptr);
+  // The pipe lives as long as the object: a fault call racing with stop() still writes to a valid fd.
+  close_socket(wake_pipe_[0]);
+  close_socket(wake_pipe_[1]);
+}
 
 void Lms100Emulator::start() {
   if (thread_.joinable()) return;
-  if (::pipe2(wake_pipe_, O_NONBLOCK | O_CLOEXEC) != 0) throw std::runtime_error("pipe2() failed");
+  if (wake_pipe_[0] < 0 && ::pipe2(wake_pipe_, O_NONBLOCK | O_CLOEXEC) != 0) {
+    throw std::runtime_error("pipe2() failed");
+  }
   stop_requested_ = false;
   server_ = std::make_unique<Server>(config_, source_, faults_, wake_pipe_[0], stop_requested_);
   try {
     server_->listen_fd = open_listening_socket(config_.bind_address, config_.port, bound_port_);
   } catch (...) {
-    close_socket(wake_pipe_[0]);
-    close_socket(wake_pipe_[1]);
     server_.reset();
     throw;
   }
@@ -337,9 +343,6 @@ void Lms100Emulator::stop() {
   const char byte = 1;
   [[maybe_unused]] const ssize_t n = ::write(wake_pipe_[1], &byte, 1);
   thread_.join();
-  faults_.set_change_listener(nullptr);
-  close_socket(wake_pipe_[0]);
-  close_socket(wake_pipe_[1]);
 }
 
 Lms100EmulatorStats Lms100Emulator::stats() const {
