@@ -69,8 +69,10 @@ void encode_lmd_scandata(const LmdTelegramHeader& header, const LmdBeamLayout& l
   append_field(out, header.measurement_frequency_100hz);
   append_field(out, 0);  // number of encoders: the LMS100 has no encoder input in use
 
-  const bool rssi16 = options.rssi_bits == 16 && rssi != nullptr;
-  const bool rssi8 = options.rssi_bits == 8 && rssi != nullptr;
+  // An empty scan (output range outside the scan area) still announces its RSSI channel.
+  const bool have_rssi = rssi != nullptr || num_beams == 0;
+  const bool rssi16 = options.rssi_bits == 16 && have_rssi;
+  const bool rssi8 = options.rssi_bits == 8 && have_rssi;
   append_field(out, rssi16 ? 2 : 1);
   append_channel(out, "DIST1", layout, dist_mm, num_beams, 0xFFFF);
   if (rssi16) append_channel(out, "RSSI1", layout, rssi, num_beams, 0xFFFF);

@@ -150,6 +150,16 @@ TEST(LmdScandataEncoder, EightBitRssiRoundTripsThroughTheDriverParser) {
   EXPECT_EQ(channel->values, rssi);
 }
 
+TEST(LmdScandataEncoder, EmptyScanKeepsItsChannelsAndParses) {
+  std::string out;
+  encode_lmd_scandata(LmdTelegramHeader{}, LmdBeamLayout{}, nullptr, nullptr, 0, LmdOutputOptions{}, out);
+  EXPECT_EQ(out,
+            "sSN LMDscandata 1 1 8D4C04 0 0 0 0 0 0 0 0 7 0 0 1388 168 0 2 "
+            "DIST1 3F800000 00000000 FFF92230 1388 0 RSSI1 3F800000 00000000 FFF92230 1388 0 0 0 0 0 0 0");
+  LmdScanData parsed;
+  EXPECT_TRUE(parse_lmd_scandata(out, parsed).ok());
+}
+
 TEST(ColaAText, WritesHexUpperCaseWithoutLeadingZeros) {
   std::string s;
   append_cola_hex(s, 0);

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
+#include <vector>
 
 namespace refloc {
 namespace {
@@ -170,6 +172,44 @@ TEST_F(Lms100DeviceTest, ErrorsUseTheSopasCodes) {
   EXPECT_EQ(ask(""), "sFA C");
   EXPECT_EQ(ask(std::string("sMN mLMPsetscancfg \x01\x02", 21)), "sFA 11");
   EXPECT_EQ(ask("sRN STlms 1"), "sFA 7");
+}
+
+TEST(Lms100DeviceRandomRequests, EveryRequestGetsAnAnswerOrAScanAndTheDeviceStaysUsable) {
+  // Requests built from real command words, numbers and junk, in random order and count.
+  const std::vector<std::string> words = {
+      "sMN", "sRN", "sWN", "sEN", "sAN", "sFA", "SetAccessMode", "mLMPsetscancfg", "LMPscancfg", "LMPoutputRange",
+      "LMDscandatacfg", "LMDscandata", "LMCstartmeas", "LMCstopmeas", "Run", "STlms", "03", "F4724744", "+5000",
+      "-450000", "+2500", "1388", "FFF92230", "225510", "0", "1", "2", "+1", "", "-", "+", "FFFFFFFFF", "\x01"};
+  std::mt19937 rng(7);
+  Lms100Device device{Lms100DeviceConfig{}};
+  std::string reply;
+  int scans = 0;
+  for (int i = 0; i < 20000; ++i) {
+    std::string request;
+    const int n = std::uniform_int_distribution<int>(0, 14)(rng);
+    for (int k = 0; k < n; ++k) {
+      if (k > 0) request += ' ';
+      request += words[std::uniform_int_distribution<size_t>(0, words.size() - 1)(rng)];
+    }
+    if (i % 97 == 0) request += static_cast<char>(std::uniform_int_distribution<int>(0, 255)(rng));
+    const auto action = device.handle_request(request, static_cast<uint64_t>(i) * 1000, reply);
+    if (action == Lms100Device::Action::reply_with_scan) {
+      ++scans;
+      continue;
+    }
+    ASSERT_GE(reply.size(), 5u) << "request '" << request << "'";
+    const std::string type = reply.substr(0, 3);
+    ASSERT_TRUE(type == "sAN" || type == "sRA" || type == "sWA" || type == "sEA" || type == "sFA")
+        << "request '" << request << "' -> '" << reply << "'";
+    ASSERT_GE(device.output_beams().count, 0);
+    ASSERT_LE(device.output_beams().count, device.full_scan_beams());
+  }
+  EXPECT_GT(scans, 0);
+  // Whatever happened, a fresh login and a valid configuration still work.
+  device.handle_request("sMN SetAccessMode 03 F4724744", 30000000, reply);
+  EXPECT_EQ(reply, "sAN SetAccessMode 1");
+  device.handle_request("sMN mLMPsetscancfg +5000 +1 +5000 -450000 +2250000", 30000000, reply);
+  EXPECT_EQ(reply, "sAN mLMPsetscancfg 0 1388 1 1388 FFF92230 225510");
 }
 
 }  // namespace
