@@ -6,6 +6,13 @@
 #include <cmath>
 
 namespace refloc {
+namespace {
+
+bool is_positive_definite(const Eigen::Matrix2d& m) {
+  return m(0, 0) > 0.0 && m(1, 1) > 0.0 && m.determinant() > 0.0;
+}
+
+}  // namespace
 
 double range_residual(const FitBeam& beam, const Eigen::Vector2d& center, double radius,
                       double min_incidence_cos, Eigen::Vector2d* d_center, double* d_radius) {
@@ -54,11 +61,14 @@ bool fit_circle_algebraic(const std::vector<FitBeam>& beams, double point_sigma,
     const double e = dist - out.radius;
     out.chi2 += e * e / (point_sigma * point_sigma);
   }
-  const Eigen::Matrix3d cov = information.inverse() * point_sigma * point_sigma;
+  // Points on a near-straight arc leave the information (numerically) singular: no fit.
+  const Eigen::FullPivLU<Eigen::Matrix3d> information_lu(information);
+  if (information_lu.rank() < 3) return false;
+  const Eigen::Matrix3d cov = information_lu.inverse() * point_sigma * point_sigma;
   out.covariance = cov.topLeftCorner<2, 2>();
   out.radius_sigma = std::sqrt(std::max(cov(2, 2), 0.0));
   out.iterations = 0;
-  return out.center.allFinite() && out.covariance.allFinite();
+  return out.center.allFinite() && out.covariance.allFinite() && is_positive_definite(out.covariance);
 }
 
 bool fit_circle_known_radius(const std::vector<FitBeam>& beams, double radius,
@@ -110,7 +120,7 @@ bool fit_circle_known_radius(const std::vector<FitBeam>& beams, double radius,
   out.covariance = information.determinant() > 1e-12 * information.trace() * information.trace()
                        ? Eigen::Matrix2d(information.inverse())
                        : Eigen::Matrix2d(regularised.inverse());
-  return out.center.allFinite() && out.covariance.allFinite();
+  return out.center.allFinite() && out.covariance.allFinite() && is_positive_definite(out.covariance);
 }
 
 bool fit_circle_free_radius(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center,

@@ -139,6 +139,47 @@ TEST(ReflectorExtractor, ExtractDoesNotReallocateItsOutputOnceWarm) {
   for (int k = 0; k < 10; ++k) EXPECT_EQ(extractor.extract(scan).data(), first);
 }
 
+TEST(ReflectorExtractor, RandomGarbageScansGiveFiniteDetectionsOnly) {
+  std::mt19937 rng(17);
+  std::uniform_int_distribution<int> kind(0, 9);
+  std::uniform_real_distribution<float> range(0.0f, 25.0f);
+  std::uniform_int_distribution<int32_t> rssi(0, 65535);
+  ReflectorExtractor default_mode;
+  ReflectorExtractor paper_mode(ExtractorConfig::paper());
+  LaserScan scan;
+  scan.start_angle = -135.0 * kDeg;
+  scan.angle_increment = 0.5 * kDeg;
+  scan.rssi_bits = 16;
+  size_t total = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const int n = k % 7 == 0 ? k % 5 : 541;
+    scan.ranges.resize(static_cast<size_t>(n));
+    scan.rssi.resize(static_cast<size_t>(n));
+    float previous = 2.0f;
+    for (int i = 0; i < n; ++i) {
+      const int what = kind(rng);
+      // Mostly smooth runs (so clusters form), with no-echo, dazzled, NaN and jumps.
+      float r = what < 6 ? previous + 0.01f * (range(rng) - 12.5f) / 12.5f : range(rng);
+      if (what == 7) r = 0.0f;
+      if (what == 8) r = 0.001f;
+      if (what == 9 && k % 3 == 0) r = std::nanf("");
+      scan.ranges[static_cast<size_t>(i)] = r;
+      if (std::isfinite(r)) previous = r;
+      scan.rssi[static_cast<size_t>(i)] = what < 5 ? 60000 : rssi(rng);
+    }
+    for (ReflectorExtractor* extractor : {&default_mode, &paper_mode}) {
+      for (const ReflectorDetection& d : extractor->extract(scan)) {
+        ASSERT_TRUE(d.laser_p_center.allFinite());
+        ASSERT_TRUE(d.covariance.allFinite());
+        ASSERT_GE(d.covariance(0, 0), 0.0);
+        ASSERT_GE(d.covariance(1, 1), 0.0);
+        ++total;
+      }
+    }
+  }
+  std::printf("%zu detections in 4000 garbage extractions\n", total);
+}
+
 // --- Paper mode (§3.2-3.4) ---
 
 TEST(PaperMode, UsesThePapersThresholdAndDropsOnePointEachSide) {
