@@ -70,14 +70,32 @@ bool parse_sopas_error(std::string_view payload, uint32_t& code) {
 }
 
 const char* sopas_error_name(uint32_t code) {
-  static constexpr const char* kNames[] = {
-      "Sopas_Ok", "METHODIN_ACCESSDENIED", "METHODIN_UNKNOWNINDEX", "VARIABLE_UNKNOWNINDEX",
-      "LOCALCONDITIONFAILED", "INVALID_DATA", "UNKNOWN_ERROR", "BUFFER_OVERFLOW", "BUFFER_UNDERFLOW",
-      "ERROR_UNKNOWN_TYPE", "VARIABLE_WRITE_ACCESSDENIED", "UNKNOWN_CMD_FOR_NAMESERVER",
-      "UNKNOWN_COLA_COMMAND", "METHODIN_SERVER_BUSY", "FLEX_OUT_OF_BOUNDS", "EVENTREG_UNKNOWNINDEX",
-      "COLA_A_VALUE_OVERFLOW", "COLA_A_INVALID_CHARACTER", "OSAI_NO_MESSAGE", "OSAI_NO_ANSWER_MESSAGE",
-      "INTERNAL", "HubAddressCorrupted", "HubAddressDecoding", "HubAddressAddressExceeded",
-      "HubAddressBlankExpected", "AsyncMethodsAreSuppressed"};
+  static constexpr const char* kNames[] = {"Sopas_Ok",
+                                           "METHODIN_ACCESSDENIED",
+                                           "METHODIN_UNKNOWNINDEX",
+                                           "VARIABLE_UNKNOWNINDEX",
+                                           "LOCALCONDITIONFAILED",
+                                           "INVALID_DATA",
+                                           "UNKNOWN_ERROR",
+                                           "BUFFER_OVERFLOW",
+                                           "BUFFER_UNDERFLOW",
+                                           "ERROR_UNKNOWN_TYPE",
+                                           "VARIABLE_WRITE_ACCESSDENIED",
+                                           "UNKNOWN_CMD_FOR_NAMESERVER",
+                                           "UNKNOWN_COLA_COMMAND",
+                                           "METHODIN_SERVER_BUSY",
+                                           "FLEX_OUT_OF_BOUNDS",
+                                           "EVENTREG_UNKNOWNINDEX",
+                                           "COLA_A_VALUE_OVERFLOW",
+                                           "COLA_A_INVALID_CHARACTER",
+                                           "OSAI_NO_MESSAGE",
+                                           "OSAI_NO_ANSWER_MESSAGE",
+                                           "INTERNAL",
+                                           "HubAddressCorrupted",
+                                           "HubAddressDecoding",
+                                           "HubAddressAddressExceeded",
+                                           "HubAddressBlankExpected",
+                                           "AsyncMethodsAreSuppressed"};
   if (code < sizeof(kNames) / sizeof(kNames[0])) return kNames[code];
   if (code == 32) return "ComplexArraysNotSupported";
   return "unknown";
@@ -86,10 +104,12 @@ const char* sopas_error_name(uint32_t code) {
 namespace {
 
 /// Checks "type name" and returns a tokenizer positioned on the arguments.
-ParseResult expect_head(std::string_view payload, std::string_view type, std::string_view name, ColaAMessage& m) {
+ParseResult expect_head(std::string_view payload, std::string_view type, std::string_view name,
+                        ColaAMessage& m) {
   uint32_t code = 0;
   if (parse_sopas_error(payload, code)) {
-    return ParseResult::failure(fmt::format("{} {}: sensor error sFA {:X} ({})", type, name, code, sopas_error_name(code)));
+    return ParseResult::failure(
+        fmt::format("{} {}: sensor error sFA {:X} ({})", type, name, code, sopas_error_name(code)));
   }
   if (!split_cola_a(payload, m) || m.type != type || m.name != name) {
     return ParseResult::failure(fmt::format("expected '{} {}', got '{}'", type, name, payload.substr(0, 60)));
@@ -102,7 +122,8 @@ ParseResult expect_head(std::string_view payload, std::string_view type, std::st
 ParseResult check_login_reply(std::string_view payload) {
   ColaAMessage m;
   if (auto r = expect_head(payload, "sAN", "SetAccessMode", m); !r) return r;
-  if (m.args != "1") return ParseResult::failure("login refused (SetAccessMode answered " + std::string(m.args) + ")");
+  if (m.args != "1")
+    return ParseResult::failure("login refused (SetAccessMode answered " + std::string(m.args) + ")");
   return ParseResult::success();
 }
 
@@ -117,17 +138,24 @@ ParseResult check_scan_config_reply(std::string_view payload, const ScanConfig& 
   int32_t start = 0;
   int32_t stop = 0;
   if (!tok.hex_u32(err)) return ParseResult::failure("mLMPsetscancfg reply: " + tok.error());
-  static constexpr const char* kErrors[] = {"no error", "invalid frequency", "invalid angular resolution",
-                                            "invalid frequency and resolution", "invalid scan area", "other error"};
+  static constexpr const char* kErrors[] = {"no error",
+                                            "invalid frequency",
+                                            "invalid angular resolution",
+                                            "invalid frequency and resolution",
+                                            "invalid scan area",
+                                            "other error"};
   if (err != 0) {
-    return ParseResult::failure(fmt::format("mLMPsetscancfg refused: error {} ({})", err, err < 6 ? kErrors[err] : "unknown"));
+    return ParseResult::failure(
+        fmt::format("mLMPsetscancfg refused: error {} ({})", err, err < 6 ? kErrors[err] : "unknown"));
   }
-  if (!tok.hex_u32(freq) || !tok.hex_u32(sectors) || !tok.hex_u32(res) || !tok.hex_i32(start) || !tok.hex_i32(stop)) {
+  if (!tok.hex_u32(freq) || !tok.hex_u32(sectors) || !tok.hex_u32(res) || !tok.hex_i32(start) ||
+      !tok.hex_i32(stop)) {
     return ParseResult::failure("mLMPsetscancfg reply: " + tok.error());
   }
   if (freq != requested.frequency_1e2hz || res != requested.resolution_1e4deg) {
-    return ParseResult::failure(fmt::format("mLMPsetscancfg echoed {} (1/100 Hz) / {} (1/10000 deg), asked {} / {}",
-                                            freq, res, requested.frequency_1e2hz, requested.resolution_1e4deg));
+    return ParseResult::failure(
+        fmt::format("mLMPsetscancfg echoed {} (1/100 Hz) / {} (1/10000 deg), asked {} / {}", freq, res,
+                    requested.frequency_1e2hz, requested.resolution_1e4deg));
   }
   return ParseResult::success();
 }
@@ -135,7 +163,8 @@ ParseResult check_scan_config_reply(std::string_view payload, const ScanConfig& 
 ParseResult check_simple_reply(std::string_view payload, std::string_view expected) {
   uint32_t code = 0;
   if (parse_sopas_error(payload, code)) {
-    return ParseResult::failure(fmt::format("'{}': sensor error sFA {:X} ({})", expected, code, sopas_error_name(code)));
+    return ParseResult::failure(
+        fmt::format("'{}': sensor error sFA {:X} ({})", expected, code, sopas_error_name(code)));
   }
   if (payload != expected) {
     return ParseResult::failure(fmt::format("expected '{}', got '{}'", expected, payload.substr(0, 60)));

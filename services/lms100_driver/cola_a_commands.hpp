@@ -12,16 +12,16 @@ namespace refloc {
 
 /// mLMPsetscancfg parameters. LMS1xx offers 50 Hz/0.5 deg, 25 Hz/0.25 deg and 25 Hz/0.5 deg.
 struct ScanConfig {
-  uint32_t frequency_1e2hz = 5000;     ///< [1/100 Hz]
-  uint32_t resolution_1e4deg = 5000;   ///< [1/10000 deg]
+  uint32_t frequency_1e2hz = 5000;    ///< [1/100 Hz]
+  uint32_t resolution_1e4deg = 5000;  ///< [1/10000 deg]
   int32_t start_angle_1e4deg = -450000;
   int32_t stop_angle_1e4deg = 2250000;
 };
 
 /// LMDscandatacfg output options (§2.2).
 struct ScanDataOutputConfig {
-  bool rssi = true;            ///< needed for reflector detection
-  bool rssi_16bit = true;      ///< false: 8-bit RSSI in the 8-bit channel block
+  bool rssi = true;        ///< needed for reflector detection
+  bool rssi_16bit = true;  ///< false: 8-bit RSSI in the 8-bit channel block
   bool device_name = false;
   bool comment = false;
   bool time_info = true;
@@ -34,11 +34,11 @@ std::string request_login();
 std::string request_set_scan_config(const ScanConfig& config);
 /// sWN LMDscandatacfg 01 00 1 1 0 00 00 0 0 0 1 +1
 std::string request_set_scandata_output(const ScanDataOutputConfig& config);
-std::string request_start_measurement();   ///< sMN LMCstartmeas
-std::string request_stop_measurement();    ///< sMN LMCstopmeas
-std::string request_run();                 ///< sMN Run
-std::string request_read_status();         ///< sRN STlms
-std::string request_read_device_state();   ///< sRN SCdevicestate
+std::string request_start_measurement();       ///< sMN LMCstartmeas
+std::string request_stop_measurement();        ///< sMN LMCstopmeas
+std::string request_run();                     ///< sMN Run
+std::string request_read_status();             ///< sRN STlms
+std::string request_read_device_state();       ///< sRN SCdevicestate
 std::string request_scandata_stream(bool on);  ///< sEN LMDscandata 1|0
 
 /// The first two tokens of a telegram and the rest.

@@ -35,9 +35,9 @@ class ColaASplitter {
   static constexpr uint8_t kEtx = 0x03;
 
   size_t max_frame_bytes_;
-  std::string pending_;   ///< received bytes not yet scanned
-  size_t scan_pos_ = 0;   ///< first byte of pending_ not yet examined
-  std::string frame_;     ///< payload of the open frame
+  std::string pending_;  ///< received bytes not yet scanned
+  size_t scan_pos_ = 0;  ///< first byte of pending_ not yet examined
+  std::string frame_;    ///< payload of the open frame
   bool in_frame_ = false;
   bool discarding_ = false;  ///< inside an oversized frame: drop until the next STX/ETX
   uint64_t garbage_bytes_ = 0;

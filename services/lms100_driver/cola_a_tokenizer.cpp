@@ -71,11 +71,13 @@ bool ColaATokenizer::hex_float(float& out) {
 bool ColaATokenizer::length_prefixed_string(std::string& out) {
   uint32_t length = 0;
   if (!hex_u32(length, 0xFFFF)) return false;
-  if (length > remaining_chars()) return fail("string length " + std::to_string(length) + " exceeds the telegram");
+  if (length > remaining_chars())
+    return fail("string length " + std::to_string(length) + " exceeds the telegram");
   out.assign(text_.substr(pos_, length));
   pos_ += length;
   if (pos_ < text_.size()) {
-    if (text_[pos_] != ' ') return fail("string of length " + std::to_string(length) + " is not followed by a space");
+    if (text_[pos_] != ' ')
+      return fail("string of length " + std::to_string(length) + " is not followed by a space");
     ++pos_;
   }
   ++tokens_read_;

@@ -100,7 +100,8 @@ ParseResult unframe_cola_b(std::string_view frame, std::string_view& payload) {
   payload = frame.substr(8, length);
   uint8_t checksum = 0;
   for (const char c : payload) checksum ^= static_cast<uint8_t>(c);
-  if (checksum != static_cast<uint8_t>(frame.back())) return ParseResult::failure("CoLa-B frame: wrong XOR checksum");
+  if (checksum != static_cast<uint8_t>(frame.back()))
+    return ParseResult::failure("CoLa-B frame: wrong XOR checksum");
   return ParseResult::success();
 }
 
@@ -117,9 +118,10 @@ ParseResult parse_lmd_scandata_cola_b(std::string_view payload, LmdScanData& out
   uint32_t n = 0;
   bool ok = r.u16(out.version) && r.u16(out.device_number) && r.u32(out.serial_number) &&
             r.u8(out.device_status[0]) && r.u8(out.device_status[1]) && r.u16(out.telegram_counter) &&
-            r.u16(out.scan_counter) && r.u32(out.time_since_startup_us) && r.u32(out.time_of_transmission_us) &&
-            r.u8(out.digital_inputs[0]) && r.u8(out.digital_inputs[1]) && r.u8(out.digital_outputs[0]) &&
-            r.u8(out.digital_outputs[1]) && r.u16(out.reserved_layer_angle) && r.u32(out.scan_frequency_1e2hz) &&
+            r.u16(out.scan_counter) && r.u32(out.time_since_startup_us) &&
+            r.u32(out.time_of_transmission_us) && r.u8(out.digital_inputs[0]) &&
+            r.u8(out.digital_inputs[1]) && r.u8(out.digital_outputs[0]) && r.u8(out.digital_outputs[1]) &&
+            r.u16(out.reserved_layer_angle) && r.u32(out.scan_frequency_1e2hz) &&
             r.u32(out.measurement_frequency_100hz);
   if (!ok) return fail_at(field, r);
   field = "encoders";
@@ -160,8 +162,8 @@ ParseResult parse_lmd_scandata_cola_b(std::string_view payload, LmdScanData& out
   out.has_time_info = n == 1;
   if (out.has_time_info) {
     auto& t = out.time_info;
-    if (!r.u16(t.year) || !r.u8(t.month) || !r.u8(t.day) || !r.u8(t.hour) || !r.u8(t.minute) || !r.u8(t.second) ||
-        !r.u32(t.microsecond)) {
+    if (!r.u16(t.year) || !r.u8(t.month) || !r.u8(t.day) || !r.u8(t.hour) || !r.u8(t.minute) ||
+        !r.u8(t.second) || !r.u32(t.microsecond)) {
       return fail_at(field, r);
     }
   }

@@ -10,14 +10,16 @@ DriverServiceConfig parse_driver_config(const JsonConfig& file) {
   const double resolution_deg = file.number("/resolution_deg", 0.5, 0.25, 0.5);
   if (resolution_deg != 0.25 && resolution_deg != 0.5) file.fail("/resolution_deg", "expected 0.5 or 0.25");
   if (frequency_hz == 50 && resolution_deg == 0.25) {
-    file.fail("/resolution_deg", "0.25 deg needs frequency_hz 25 (the LMS1xx offers 50/0.5, 25/0.25, 25/0.5)");
+    file.fail("/resolution_deg",
+              "0.25 deg needs frequency_hz 25 (the LMS1xx offers 50/0.5, 25/0.25, 25/0.5)");
   }
   s.scan.frequency_1e2hz = static_cast<uint32_t>(frequency_hz * 100);
   s.scan.resolution_1e4deg = resolution_deg == 0.25 ? 2500 : 5000;
   s.set_scan_config = file.boolean("/set_scan_config", s.set_scan_config);
 
   const long long rssi_bits = file.integer("/rssi_bits", 16, 0, 16);
-  if (rssi_bits != 0 && rssi_bits != 8 && rssi_bits != 16) file.fail("/rssi_bits", "expected 16, 8 or 0 (off)");
+  if (rssi_bits != 0 && rssi_bits != 8 && rssi_bits != 16)
+    file.fail("/rssi_bits", "expected 16, 8 or 0 (off)");
   s.output.rssi = rssi_bits != 0;
   s.output.rssi_16bit = rssi_bits == 16;
   s.output.time_info = file.boolean("/time_info", s.output.time_info);
@@ -33,9 +35,9 @@ DriverServiceConfig parse_driver_config(const JsonConfig& file) {
   s.max_parse_error_streak =
       static_cast<uint32_t>(file.integer("/max_parse_error_streak", s.max_parse_error_streak, 1, 1000));
   s.clock.bin_s = file.number("/clock_bin_s", s.clock.bin_s, 0.1, 60);
-  s.clock.window_bins = static_cast<size_t>(
-      file.integer("/clock_window_bins", static_cast<long long>(s.clock.window_bins), 5,
-                   static_cast<long long>(SensorClockFilter::kMaxBins)));
+  s.clock.window_bins =
+      static_cast<size_t>(file.integer("/clock_window_bins", static_cast<long long>(s.clock.window_bins), 5,
+                                       static_cast<long long>(SensorClockFilter::kMaxBins)));
   c.output_channel = file.string("/output_channel", c.output_channel);
   if (c.output_channel.empty()) file.fail("/output_channel", "must not be empty");
   c.error_after_s = file.number("/error_after_s", c.error_after_s, 0.1, 3600);

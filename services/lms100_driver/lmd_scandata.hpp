@@ -11,12 +11,12 @@ namespace refloc {
 
 /// One measurement channel (DIST1, DIST2, RSSI1, ...) of the 16- or 8-bit block.
 struct LmdChannel {
-  std::string name;                 ///< 5 characters, e.g. "DIST1", "RSSI1"
-  float scale = 1.0F;               ///< raw * scale + offset
+  std::string name;    ///< 5 characters, e.g. "DIST1", "RSSI1"
+  float scale = 1.0F;  ///< raw * scale + offset
   float offset = 0.0F;
-  int32_t start_angle_1e4deg = 0;   ///< sensor angle of value 0 [1/10000 deg]
-  uint32_t step_1e4deg = 0;         ///< [1/10000 deg]
-  std::vector<uint16_t> values;     ///< sized from the telegram's own count field
+  int32_t start_angle_1e4deg = 0;  ///< sensor angle of value 0 [1/10000 deg]
+  uint32_t step_1e4deg = 0;        ///< [1/10000 deg]
+  std::vector<uint16_t> values;    ///< sized from the telegram's own count field
 };
 
 struct LmdEncoder {
@@ -26,7 +26,7 @@ struct LmdEncoder {
 
 /// Position block (LMS5xx manual layout; all drivers keep it off).
 struct LmdPosition {
-  float x = 0, y = 0, z = 0;              ///< as sent (device units)
+  float x = 0, y = 0, z = 0;  ///< as sent (device units)
   float x_rotation = 0, y_rotation = 0, z_rotation = 0;
   uint32_t rotation_type = 0;
   uint32_t transmits_name = 0;
@@ -40,14 +40,14 @@ struct LmdTimeInfo {
 
 /// Event block (LMS5xx manual layout; LMS1xx sends 0).
 struct LmdEvent {
-  std::string type;          ///< e.g. "FDIN"
+  std::string type;  ///< e.g. "FDIN"
   uint32_t encoder_position = 0;
   uint32_t time_us = 0;
   int32_t angle_1e4deg = 0;
 };
 
 struct LmdScanData {
-  bool is_stream_event = false;        ///< sSN (stream) rather than sRA (poll reply)
+  bool is_stream_event = false;  ///< sSN (stream) rather than sRA (poll reply)
   uint32_t version = 0;
   uint32_t device_number = 0;
   uint32_t serial_number = 0;
@@ -58,8 +58,8 @@ struct LmdScanData {
   uint32_t time_of_transmission_us = 0;
   uint32_t digital_inputs[2] = {0, 0};
   uint32_t digital_outputs[2] = {0, 0};
-  uint32_t reserved_layer_angle = 0;   ///< 0 on LMS1xx
-  uint32_t scan_frequency_1e2hz = 0;   ///< 5000 = 50 Hz
+  uint32_t reserved_layer_angle = 0;         ///< 0 on LMS1xx
+  uint32_t scan_frequency_1e2hz = 0;         ///< 5000 = 50 Hz
   uint32_t measurement_frequency_100hz = 0;  ///< beam rate / 100 Hz (360 = 36 kHz)
   std::vector<LmdEncoder> encoders;
   std::vector<LmdChannel> channels16;
@@ -67,7 +67,7 @@ struct LmdScanData {
   bool has_position = false;
   LmdPosition position;
   bool has_name = false;
-  std::string name;                    ///< may contain spaces
+  std::string name;  ///< may contain spaces
   bool has_comment = false;
   std::string comment;
   bool has_time_info = false;

@@ -85,7 +85,8 @@ class LmdParser {
            u32("scan counter", out_.scan_counter, 0xFFFF) &&
            u32("time since start-up", out_.time_since_startup_us) &&
            u32("time of transmission", out_.time_of_transmission_us) &&
-           u32("digital inputs", out_.digital_inputs[0], 0xFF) && u32("digital inputs", out_.digital_inputs[1], 0xFF) &&
+           u32("digital inputs", out_.digital_inputs[0], 0xFF) &&
+           u32("digital inputs", out_.digital_inputs[1], 0xFF) &&
            u32("digital outputs", out_.digital_outputs[0], 0xFF) &&
            u32("digital outputs", out_.digital_outputs[1], 0xFF) &&
            u32("reserved/layer angle", out_.reserved_layer_angle, 0xFFFF);
@@ -111,7 +112,8 @@ class LmdParser {
 
   bool channel_block(int bits, std::vector<LmdChannel>& channels) {
     uint32_t count = 0;
-    if (!u32(bits == 16 ? "number of 16-bit channels" : "number of 8-bit channels", count, 0xFFFF)) return false;
+    if (!u32(bits == 16 ? "number of 16-bit channels" : "number of 8-bit channels", count, 0xFFFF))
+      return false;
     if (count > limits_.max_channels) return fail_here("more channels than the limit");
     channels.resize(count);
     for (auto& c : channels) {
@@ -151,8 +153,8 @@ class LmdParser {
     if (out_.has_position) {
       auto& p = out_.position;
       field_ = "position";
-      if (!tok_.hex_float(p.x) || !tok_.hex_float(p.y) || !tok_.hex_float(p.z) || !tok_.hex_float(p.x_rotation) ||
-          !tok_.hex_float(p.y_rotation) || !tok_.hex_float(p.z_rotation) ||
+      if (!tok_.hex_float(p.x) || !tok_.hex_float(p.y) || !tok_.hex_float(p.z) ||
+          !tok_.hex_float(p.x_rotation) || !tok_.hex_float(p.y_rotation) || !tok_.hex_float(p.z_rotation) ||
           !u32("rotation type", p.rotation_type, 0xFF) || !u32("transmits name", p.transmits_name, 0xFF)) {
         return false;
       }
@@ -178,7 +180,8 @@ class LmdParser {
       std::string_view type;
       if (!tok_.token(type)) return false;
       out_.event.type.assign(type);
-      if (!u32("event encoder position", out_.event.encoder_position) || !u32("event time", out_.event.time_us)) {
+      if (!u32("event encoder position", out_.event.encoder_position) ||
+          !u32("event time", out_.event.time_us)) {
         return false;
       }
       field_ = "event angle";

@@ -10,7 +10,7 @@ namespace refloc {
 
 /// Limits that keep a corrupt telegram from asking for absurd sizes.
 struct LmdParseLimits {
-  uint32_t max_channels = 16;   ///< per block
+  uint32_t max_channels = 16;  ///< per block
   uint32_t max_encoders = 8;
 };
 

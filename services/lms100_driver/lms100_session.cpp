@@ -19,12 +19,18 @@ namespace refloc {
 
 const char* to_string(SessionState state) {
   switch (state) {
-    case SessionState::kConnecting: return "connecting";
-    case SessionState::kConfiguring: return "configuring";
-    case SessionState::kWaitingReady: return "waiting for ready";
-    case SessionState::kStreaming: return "streaming";
-    case SessionState::kBackoff: return "backoff";
-    case SessionState::kStopped: return "stopped";
+    case SessionState::kConnecting:
+      return "connecting";
+    case SessionState::kConfiguring:
+      return "configuring";
+    case SessionState::kWaitingReady:
+      return "waiting for ready";
+    case SessionState::kStreaming:
+      return "streaming";
+    case SessionState::kBackoff:
+      return "backoff";
+    case SessionState::kStopped:
+      return "stopped";
   }
   return "?";
 }
@@ -82,7 +88,8 @@ bool Lms100Session::sleep_interruptible(double seconds) {
     const int64_t left_us = deadline - monotonic_us();
     if (left_us <= 0) return true;
     pollfd fds{wake_pipe_[0], POLLIN, 0};
-    ::poll(&fds, wake_pipe_[0] >= 0 ? 1 : 0, static_cast<int>(std::min<int64_t>(left_us / 1000 + 1, kMaxPollMs)));
+    ::poll(&fds, wake_pipe_[0] >= 0 ? 1 : 0,
+           static_cast<int>(std::min<int64_t>(left_us / 1000 + 1, kMaxPollMs)));
   }
   return false;
 }
@@ -108,7 +115,9 @@ void Lms100Session::run() {
 std::string Lms100Session::run_connection() {
   const std::string where = fmt::format("{}:{}", config_.host, config_.port);
   set_state(SessionState::kConnecting, "connecting to " + where);
-  if (const ParseResult r = link_.connect(config_.host, config_.port, config_.connect_timeout_s, wake_pipe_[0]); !r) {
+  if (const ParseResult r =
+          link_.connect(config_.host, config_.port, config_.connect_timeout_s, wake_pipe_[0]);
+      !r) {
     ++counters_.connect_failures;
     return r.error;
   }
@@ -121,7 +130,8 @@ std::string Lms100Session::run_connection() {
 
   std::string reply;
   std::string why;
-  const auto step = [&](const std::string& request, const std::function<ParseResult(const std::string&)>& check) {
+  const auto step = [&](const std::string& request,
+                        const std::function<ParseResult(const std::string&)>& check) {
     const Wait w = transact(request, config_.reply_timeout_s, reply, why);
     if (w != Wait::kReply) return false;
     if (const ParseResult r = check(reply); !r) {
@@ -136,9 +146,11 @@ std::string Lms100Session::run_connection() {
     return "sEN LMDscandata 0: " + why;
   }
   const ScanConfig& scan = config_.scan;
-  if (!step(request_login(), [](const std::string& r) { return check_login_reply(r); })) return "login: " + why;
-  if (config_.set_scan_config &&
-      !step(request_set_scan_config(scan), [&](const std::string& r) { return check_scan_config_reply(r, scan); })) {
+  if (!step(request_login(), [](const std::string& r) { return check_login_reply(r); }))
+    return "login: " + why;
+  if (config_.set_scan_config && !step(request_set_scan_config(scan), [&](const std::string& r) {
+        return check_scan_config_reply(r, scan);
+      })) {
     return "mLMPsetscancfg: " + why;
   }
   if (!step(request_set_scandata_output(config_.output),
@@ -163,7 +175,8 @@ std::string Lms100Session::run_connection() {
     }
     if (status == kStatusReadyForMeasurement) break;
     if (status != last_status) {
-      set_state(SessionState::kWaitingReady, fmt::format("{}: waiting for STlms 7, sensor reports {}", where, status));
+      set_state(SessionState::kWaitingReady,
+                fmt::format("{}: waiting for STlms 7, sensor reports {}", where, status));
       last_status = status;
     }
     if (monotonic_us() > ready_deadline) {
@@ -183,7 +196,8 @@ std::string Lms100Session::run_connection() {
   set_state(SessionState::kStreaming, "streaming from " + where);
 
   const double scan_timeout_s = config_.scan_timeout_periods * config_.scan_period_s();
-  int64_t deadline = monotonic_us() + static_cast<int64_t>(std::max(config_.first_scan_timeout_s, scan_timeout_s) * 1e6);
+  int64_t deadline =
+      monotonic_us() + static_cast<int64_t>(std::max(config_.first_scan_timeout_s, scan_timeout_s) * 1e6);
   for (;;) {
     const Wait w = pump(nullptr, deadline, true, reply, why);
     if (w == Wait::kScan) {
@@ -264,7 +278,8 @@ Lms100Session::Wait Lms100Session::pump(const std::string* request, int64_t dead
     }
     size_t received = 0;
     const int timeout_ms = static_cast<int>(std::min<int64_t>(left_us / 1000 + 1, kMaxPollMs));
-    const IoStatus s = link_.receive(receive_buffer_.data(), receive_buffer_.size(), timeout_ms, wake_pipe_[0], received);
+    const IoStatus s =
+        link_.receive(receive_buffer_.data(), receive_buffer_.size(), timeout_ms, wake_pipe_[0], received);
     switch (s) {
       case IoStatus::kOk:
         last_read_utime_ = now_utime();

@@ -23,7 +23,7 @@ namespace refloc {
 struct Lms100SessionConfig {
   std::string host = "192.168.0.1";
   uint16_t port = 2111;
-  ScanConfig scan;                      ///< sent with mLMPsetscancfg when set_scan_config
+  ScanConfig scan;  ///< sent with mLMPsetscancfg when set_scan_config
   bool set_scan_config = true;
   ScanDataOutputConfig output;
   double connect_timeout_s = 2.0;       ///< [s]
@@ -45,19 +45,19 @@ struct Lms100SessionConfig {
 
 /// Everything the session counts; atomics so another thread can read them.
 struct Lms100SessionCounters {
-  std::atomic<uint64_t> connects{0};          ///< TCP connections established
+  std::atomic<uint64_t> connects{0};  ///< TCP connections established
   std::atomic<uint64_t> connect_failures{0};
-  std::atomic<uint64_t> reconnects{0};        ///< sessions that failed and were restarted
-  std::atomic<uint64_t> timeouts{0};          ///< reply, readiness and scan timeouts
+  std::atomic<uint64_t> reconnects{0};  ///< sessions that failed and were restarted
+  std::atomic<uint64_t> timeouts{0};    ///< reply, readiness and scan timeouts
   std::atomic<uint64_t> sfa_errors{0};
   std::atomic<uint64_t> parse_errors{0};
   std::atomic<uint64_t> garbage_bytes{0};
   std::atomic<uint64_t> resyncs{0};
   std::atomic<uint64_t> oversized_frames{0};
-  std::atomic<uint64_t> unexpected_frames{0}; ///< frames that answer nothing we asked
+  std::atomic<uint64_t> unexpected_frames{0};  ///< frames that answer nothing we asked
   std::atomic<uint64_t> scans{0};
-  std::atomic<uint64_t> scan_counter_gaps{0}; ///< times the scan counter skipped
-  std::atomic<uint64_t> lost_scans{0};        ///< scans missing in those gaps
+  std::atomic<uint64_t> scan_counter_gaps{0};  ///< times the scan counter skipped
+  std::atomic<uint64_t> lost_scans{0};         ///< scans missing in those gaps
 };
 
 enum class SessionState { kConnecting, kConfiguring, kWaitingReady, kStreaming, kBackoff, kStopped };

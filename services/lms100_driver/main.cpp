@@ -119,7 +119,8 @@ int run(const Options& options) {
     } else {
       runtime.set_state(heartbeat_t::STATE_ERROR, fmt::format("no scan for {:.0f} s: {}", silent_s, detail));
     }
-    if (last_publish_us.load() > 0) runtime.add_processing_time_us(static_cast<double>(last_publish_us.exchange(0)));
+    if (last_publish_us.load() > 0)
+      runtime.add_processing_time_us(static_cast<double>(last_publish_us.exchange(0)));
   });
 
   session.start_thread();
@@ -134,9 +135,11 @@ int run(const Options& options) {
 int main(int argc, char** argv) {
   CLI::App app{"SICK LMS100 driver: CoLa-A over TCP -> LMS100_SCAN"};
   refloc::Options o;
-  app.add_option("--host", o.host, "sensor address (our simulator scripts pass 127.0.0.1)")->capture_default_str();
+  app.add_option("--host", o.host, "sensor address (our simulator scripts pass 127.0.0.1)")
+      ->capture_default_str();
   app.add_option("--port", o.port, "sensor CoLa-A port")->capture_default_str();
-  app.add_option("--config", o.config_path, "service config file (JSON), e.g. deploy/config/lms100_driver.json");
+  app.add_option("--config", o.config_path,
+                 "service config file (JSON), e.g. deploy/config/lms100_driver.json");
   app.add_option("--lcm-url", o.lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
   app.add_flag("-v,--verbose", o.verbose, "debug log lines");
   CLI11_PARSE(app, argc, argv);

@@ -26,13 +26,14 @@ ParseResult to_laser_scan(const LmdScanData& data, LaserScan& out) {
   if (!sane(*dist)) return ParseResult::failure("DIST1 scale factor or offset is not plausible");
   int rssi_bits = 0;
   const LmdChannel* rssi = data.find_channel("RSSI1", &rssi_bits);
-  if (rssi != nullptr && (rssi->values.size() != dist->values.size() ||
-                          rssi->start_angle_1e4deg != dist->start_angle_1e4deg ||
-                          rssi->step_1e4deg != dist->step_1e4deg)) {
+  if (rssi != nullptr &&
+      (rssi->values.size() != dist->values.size() || rssi->start_angle_1e4deg != dist->start_angle_1e4deg ||
+       rssi->step_1e4deg != dist->step_1e4deg)) {
     return ParseResult::failure("RSSI1 layout (" + std::to_string(rssi->values.size()) +
                                 " values) differs from DIST1 (" + std::to_string(dist->values.size()) + ")");
   }
-  if (rssi != nullptr && !sane(*rssi)) return ParseResult::failure("RSSI1 scale factor or offset is not plausible");
+  if (rssi != nullptr && !sane(*rssi))
+    return ParseResult::failure("RSSI1 scale factor or offset is not plausible");
 
   out.scan_counter = data.scan_counter;
   out.telegram_counter = data.telegram_counter;

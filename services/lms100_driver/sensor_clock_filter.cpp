@@ -32,7 +32,8 @@ int64_t SensorClockFilter::to_host_utime(int64_t sensor_us) const {
   return origin_host_us_ + static_cast<int64_t>(std::llround(x + intercept_us_ + drift_ * x));
 }
 
-SensorTimeMapping SensorClockFilter::update(uint32_t start_us, uint32_t transmit_us, int64_t host_receive_utime) {
+SensorTimeMapping SensorClockFilter::update(uint32_t start_us, uint32_t transmit_us,
+                                            int64_t host_receive_utime) {
   if (initialized_) {
     // Signed difference: forward across the 2^32 us wrap is positive; a sensor reboot is negative.
     const int64_t step = static_cast<int32_t>(transmit_us - last_transmit_raw_);

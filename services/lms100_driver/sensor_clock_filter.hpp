@@ -17,12 +17,12 @@
 namespace refloc {
 
 struct SensorClockFilterConfig {
-  double bin_s = 1.0;                ///< one lower-envelope sample per bin [s]
-  size_t window_bins = 60;           ///< fit window = window_bins · bin_s (at most kMaxBins)
-  size_t min_bins_for_drift = 5;     ///< fewer closed bins: drift assumed 0
-  double step_backward_s = 0.05;     ///< a telegram this much earlier than the envelope = host clock step [s]
-  double step_forward_s = 1.0;       ///< consistently this much later = host clock step [s]
-  size_t step_forward_count = 25;    ///< how many late telegrams in a row make a step
+  double bin_s = 1.0;              ///< one lower-envelope sample per bin [s]
+  size_t window_bins = 60;         ///< fit window = window_bins · bin_s (at most kMaxBins)
+  size_t min_bins_for_drift = 5;   ///< fewer closed bins: drift assumed 0
+  double step_backward_s = 0.05;   ///< a telegram this much earlier than the envelope = host clock step [s]
+  double step_forward_s = 1.0;     ///< consistently this much later = host clock step [s]
+  size_t step_forward_count = 25;  ///< how many late telegrams in a row make a step
 };
 
 /// Sensor times after unwrapping and their host equivalents.
@@ -49,13 +49,13 @@ class SensorClockFilter {
   void reset();
 
   double drift_ppm() const { return drift_ * 1e6; }  ///< host rate minus sensor rate [ppm]
-  uint64_t resets() const { return resets_; }         ///< clock steps and wraps backwards seen
+  uint64_t resets() const { return resets_; }        ///< clock steps and wraps backwards seen
   bool has_drift_estimate() const { return closed_bins_ >= config_.min_bins_for_drift; }
 
  private:
   struct Bin {
-    double sensor_us = 0;      ///< relative to origin
-    double offset_us = 0;      ///< min over the bin of host − sensor
+    double sensor_us = 0;  ///< relative to origin
+    double offset_us = 0;  ///< min over the bin of host − sensor
   };
   void close_bin();
   void fit();
@@ -65,11 +65,11 @@ class SensorClockFilter {
   bool initialized_ = false;
   uint32_t last_transmit_raw_ = 0;
   int64_t transmit_unwrapped_ = 0;
-  int64_t origin_sensor_us_ = 0;   ///< sensor time of the first sample (keeps doubles small)
+  int64_t origin_sensor_us_ = 0;  ///< sensor time of the first sample (keeps doubles small)
   int64_t origin_host_us_ = 0;
 
   std::array<Bin, kMaxBins> bins_{};
-  size_t bin_head_ = 0;            ///< ring buffer of closed bins
+  size_t bin_head_ = 0;  ///< ring buffer of closed bins
   size_t closed_bins_ = 0;
   bool bin_open_ = false;
   Bin open_bin_;

@@ -51,7 +51,8 @@ ParseResult TcpConnection::connect(const std::string& host, uint16_t port, doubl
     hints.ai_socktype = SOCK_STREAM;
     addrinfo* result = nullptr;
     const int rc = ::getaddrinfo(host.c_str(), nullptr, &hints, &result);
-    if (rc != 0 || result == nullptr) return ParseResult::failure("cannot resolve '" + host + "': " + gai_strerror(rc));
+    if (rc != 0 || result == nullptr)
+      return ParseResult::failure("cannot resolve '" + host + "': " + gai_strerror(rc));
     addr.sin_addr = reinterpret_cast<sockaddr_in*>(result->ai_addr)->sin_addr;
     ::freeaddrinfo(result);
   }
@@ -69,7 +70,8 @@ ParseResult TcpConnection::connect(const std::string& host, uint16_t port, doubl
     const IoStatus s = wait_fd(fd_, POLLOUT, to_ms(timeout_s), wake_fd);
     if (s != IoStatus::kOk) {
       close();
-      return ParseResult::failure("connect " + where + (s == IoStatus::kStopped ? ": stopped" : ": timed out"));
+      return ParseResult::failure("connect " + where +
+                                  (s == IoStatus::kStopped ? ": stopped" : ": timed out"));
     }
     int error = 0;
     socklen_t len = sizeof error;
@@ -103,7 +105,8 @@ IoStatus TcpConnection::send_all(const std::string& bytes, double timeout_s, int
   return IoStatus::kOk;
 }
 
-IoStatus TcpConnection::receive(uint8_t* buffer, size_t capacity, int timeout_ms, int wake_fd, size_t& received) {
+IoStatus TcpConnection::receive(uint8_t* buffer, size_t capacity, int timeout_ms, int wake_fd,
+                                size_t& received) {
   received = 0;
   if (fd_ < 0) return IoStatus::kClosed;
   const IoStatus s = wait_fd(fd_, POLLIN, timeout_ms, wake_fd);

@@ -37,7 +37,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   parse_payload(whole, parsed, scan);
   // The same bytes as a CoLa-B frame and as a CoLa-B payload.
   std::string_view binary_payload;
-  if (refloc::unframe_cola_b(whole, binary_payload).ok()) (void)refloc::parse_lmd_scandata_cola_b(binary_payload, parsed);
+  if (refloc::unframe_cola_b(whole, binary_payload).ok())
+    (void)refloc::parse_lmd_scandata_cola_b(binary_payload, parsed);
   if (refloc::parse_lmd_scandata_cola_b(whole, parsed).ok()) (void)refloc::to_laser_scan(parsed, scan);
 
   refloc::ColaASplitter splitter(4096);

@@ -12,7 +12,8 @@ TEST(ColaACommands, RequestsAreTheDocumentedStrings) {
   slow.frequency_1e2hz = 2500;
   slow.resolution_1e4deg = 2500;
   EXPECT_EQ(request_set_scan_config(slow), "sMN mLMPsetscancfg +2500 +1 +2500 -450000 +2250000");
-  EXPECT_EQ(request_set_scandata_output(ScanDataOutputConfig{}), "sWN LMDscandatacfg 01 00 1 1 0 00 00 0 0 0 1 +1");
+  EXPECT_EQ(request_set_scandata_output(ScanDataOutputConfig{}),
+            "sWN LMDscandatacfg 01 00 1 1 0 00 00 0 0 0 1 +1");
   ScanDataOutputConfig eight;
   eight.rssi_16bit = false;
   eight.time_info = false;

@@ -70,7 +70,8 @@ TEST(ColaASplitter, ByteByByteFeedGivesSameTelegrams) {
 
 TEST(ColaASplitter, GarbageBetweenTelegramsIsCountedAndSkipped) {
   ColaASplitter splitter;
-  feed_string(splitter, "junk" + frame_cola_a("sFA 4") + "\r\nxx\x03" + frame_cola_a("sWA LMDscandatacfg") + "z");
+  feed_string(splitter,
+              "junk" + frame_cola_a("sFA 4") + "\r\nxx\x03" + frame_cola_a("sWA LMDscandatacfg") + "z");
   EXPECT_EQ(drain(splitter), (std::vector<std::string>{"sFA 4", "sWA LMDscandatacfg"}));
   EXPECT_EQ(splitter.garbage_bytes(), 4u + 5u + 1u);
 }

@@ -19,7 +19,8 @@ std::vector<std::string> real_frames() {
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
     std::string bytes;
-    for (size_t i = 0; i + 1 < line.size(); i += 2) bytes.push_back(static_cast<char>(std::stoi(line.substr(i, 2), nullptr, 16)));
+    for (size_t i = 0; i + 1 < line.size(); i += 2)
+      bytes.push_back(static_cast<char>(std::stoi(line.substr(i, 2), nullptr, 16)));
     frames.push_back(bytes);
   }
   return frames;

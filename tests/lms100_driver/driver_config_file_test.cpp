@@ -48,7 +48,8 @@ TEST(DriverConfigFile, BadValuesNameTheKey) {
 }
 
 TEST(DriverConfigFile, DeployedFileLoads) {
-  const JsonConfig file = JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/lms100_driver.json");
+  const JsonConfig file =
+      JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/lms100_driver.json");
   const DriverServiceConfig c = parse_driver_config(file);
   EXPECT_NO_THROW(file.reject_unknown_keys());
   EXPECT_EQ(c.session.scan.frequency_1e2hz, 5000u);

@@ -13,8 +13,8 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
-#include <thread>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "tests/tools/child_process.hpp"
@@ -64,7 +64,8 @@ std::vector<std::string> emulator_argv() {
 }
 
 std::vector<std::string> driver_argv(const std::string& config) {
-  return {kBin + "lms100_driver", "--host", "127.0.0.1", "--port", "2111", "--config", config, "--lcm-url", kUrl};
+  return {
+      kBin + "lms100_driver", "--host", "127.0.0.1", "--port", "2111", "--config", config, "--lcm-url", kUrl};
 }
 
 std::string write_config(const std::string& name, const std::string& json) {
@@ -80,7 +81,8 @@ TEST(Lms100DriverProcess, PublishesScansAndRecoversWhenTheEmulatorIsKilledAndRes
   lcm.subscribe("HEARTBEAT", &Collector::on_heartbeat, &c);
   lcm.subscribe("LMS100_SCAN", &Collector::on_scan, &c);
   const std::string config = write_config("lms100_driver_process_test.json", R"({"error_after_s": 1.0})");
-  auto emulator = std::make_unique<testing::ChildProcess>(emulator_argv(), kLogDir + "lms100_driver_process_emulator.log");
+  auto emulator = std::make_unique<testing::ChildProcess>(emulator_argv(),
+                                                          kLogDir + "lms100_driver_process_emulator.log");
   testing::ChildProcess driver(driver_argv(config), kLogDir + "lms100_driver_process_driver.log");
 
   ASSERT_TRUE(spin_until(lcm, 5s, [&] { return c.scans.size() >= 100; })) << c.scans.size() << " scans";
@@ -107,7 +109,8 @@ TEST(Lms100DriverProcess, PublishesScansAndRecoversWhenTheEmulatorIsKilledAndRes
 
   // After a long outage the back-off (0.5 s doubling to 5 s) bounds the recovery time.
   size_t before = c.scans.size();
-  emulator = std::make_unique<testing::ChildProcess>(emulator_argv(), kLogDir + "lms100_driver_process_emulator.log");
+  emulator = std::make_unique<testing::ChildProcess>(emulator_argv(),
+                                                     kLogDir + "lms100_driver_process_emulator.log");
   auto restarted = Clock::now();
   ASSERT_TRUE(spin_until(lcm, 8s, [&] { return c.scans.size() > before; }));
   double resume_s = std::chrono::duration<double>(c.scan_times[before] - restarted).count();
@@ -120,7 +123,8 @@ TEST(Lms100DriverProcess, PublishesScansAndRecoversWhenTheEmulatorIsKilledAndRes
   emulator.reset();
   std::this_thread::sleep_for(300ms);
   before = c.scans.size();
-  emulator = std::make_unique<testing::ChildProcess>(emulator_argv(), kLogDir + "lms100_driver_process_emulator.log");
+  emulator = std::make_unique<testing::ChildProcess>(emulator_argv(),
+                                                     kLogDir + "lms100_driver_process_emulator.log");
   restarted = Clock::now();
   ASSERT_TRUE(spin_until(lcm, 5s, [&] { return c.scans.size() > before; }));
   resume_s = std::chrono::duration<double>(c.scan_times[before] - restarted).count();

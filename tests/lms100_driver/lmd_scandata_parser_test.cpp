@@ -89,7 +89,8 @@ TEST(LmdScanDataParser, RealMrs1000TelegramHasThreeDistAndThree8BitRssiChannels)
 
 TEST(LmdScanDataParser, Rssi16BitChannelIsSecondChannelOfThe16BitBlock) {
   LmdScanData d;
-  const ParseResult r = parse_lmd_scandata(make_scan_telegram({500, 1, 0, 20000}, {100, 65535, 0, 64800}, 16), d);
+  const ParseResult r =
+      parse_lmd_scandata(make_scan_telegram({500, 1, 0, 20000}, {100, 65535, 0, 64800}, 16), d);
   ASSERT_TRUE(r.ok()) << r.error;
   ASSERT_EQ(d.channels16.size(), 2u);
   EXPECT_EQ(d.channels16[1].name, "RSSI1");
@@ -111,7 +112,8 @@ TEST(LmdScanDataParser, Rssi8BitChannelIsInThe8BitBlock) {
 
 TEST(LmdScanDataParser, NameWithSpacesAndEncoderAndEventAreDecoded) {
   const std::string t =
-      "sSN LMDscandata 1 1 1 0 0 1 2 3 4 0 0 0 0 0 9C4 168 1 3E8 2 1 DIST1 3F800000 00000000 6DDD0 9C4 2 10 11 0 "
+      "sSN LMDscandata 1 1 1 0 0 1 2 3 4 0 0 0 0 0 9C4 168 1 3E8 2 1 DIST1 3F800000 00000000 6DDD0 9C4 2 10 "
+      "11 0 "
       "0 1 B not defined 1 2 hi 0 1 FDIN 5 6 FFFFFFFF";
   LmdScanData d;
   const ParseResult r = parse_lmd_scandata(t, d);
@@ -154,7 +156,8 @@ TEST(LmdScanDataParser, TruncationAtEveryByteNeverCrashes) {
   const std::string payload = read_telegram_payload("mrs1000_cola_a.txt");
   LmdScanData d;
   size_t failures = 0;
-  for (size_t i = 0; i < payload.size(); ++i) failures += parse_lmd_scandata(payload.substr(0, i), d).ok() ? 0 : 1;
+  for (size_t i = 0; i < payload.size(); ++i)
+    failures += parse_lmd_scandata(payload.substr(0, i), d).ok() ? 0 : 1;
   EXPECT_EQ(failures, payload.size());
 }
 
@@ -211,8 +214,8 @@ TEST(LmdScanDataParser, OverlongHexNumberIsAnError) {
 
 TEST(LmdScanDataParser, StringLengthBeyondTelegramIsAnError) {
   LmdScanData d;
-  const ParseResult r = parse_lmd_scandata(
-      "sSN LMDscandata 1 1 1 0 0 1 2 3 4 0 0 0 0 0 9C4 168 0 0 0 0 1 FF short", d);
+  const ParseResult r =
+      parse_lmd_scandata("sSN LMDscandata 1 1 1 0 0 1 2 3 4 0 0 0 0 0 9C4 168 0 0 0 0 1 FF short", d);
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.error.find("device name"), std::string::npos) << r.error;
 }

@@ -34,7 +34,8 @@ TEST(ScanConversion, RealLms111ScanBecomesLaserFrameMetres) {
 
 TEST(ScanConversion, NoEchoAndDazzledCodesAreKeptAsMarkers) {
   LmdScanData d;
-  ASSERT_TRUE(parse_lmd_scandata(test::make_scan_telegram({0, 1, 16, 20000}, {0, 65535, 10, 64800}, 16), d).ok());
+  ASSERT_TRUE(
+      parse_lmd_scandata(test::make_scan_telegram({0, 1, 16, 20000}, {0, 65535, 10, 64800}, 16), d).ok());
   LaserScan s;
   ASSERT_TRUE(to_laser_scan(d, s).ok());
   EXPECT_EQ(s.ranges[0], 0.0F);

@@ -96,7 +96,8 @@ TEST(SensorClockFilter, UnwrapsTheSensorClockAcrossTwoToThe32Microseconds) {
       EXPECT_GT(m.sensor_transmit_us, last_transmit);
     }
     last_transmit = m.sensor_transmit_us;
-    if (k > 50 * 15) worst_us = std::max(worst_us, std::fabs(static_cast<double>(m.host_start_utime - s.true_start_utime)));
+    if (k > 50 * 15)
+      worst_us = std::max(worst_us, std::fabs(static_cast<double>(m.host_start_utime - s.true_start_utime)));
   }
   EXPECT_GT(last_transmit, int64_t{0xFFFFFFFF});
   EXPECT_LT(worst_us, 500.0);
@@ -124,7 +125,8 @@ TEST(SensorClockFilter, HostClockStepBackwardsRestartsTheFit) {
     s.receive_utime -= 2'000'000;  // NTP stepped the host clock back by 2 s
     const SensorTimeMapping m = filter.update(s.start_us, s.transmit_us, s.receive_utime);
     if (k > 600) {
-      worst_us = std::max(worst_us, std::fabs(static_cast<double>(m.host_start_utime - (s.true_start_utime - 2'000'000))));
+      worst_us = std::max(
+          worst_us, std::fabs(static_cast<double>(m.host_start_utime - (s.true_start_utime - 2'000'000))));
     }
   }
   EXPECT_EQ(filter.resets(), 1u);

@@ -31,7 +31,8 @@ struct RecordingSource {
     return [this](const ScanRequest& r, std::vector<uint16_t>& dist, std::vector<uint16_t>& rssi) {
       make_test_pattern_scan_source()(r, dist, rssi);
       // Vary values with the scan so a stale or mixed-up scan cannot pass.
-      for (size_t i = 0; i < dist.size(); ++i) dist[i] = static_cast<uint16_t>(dist[i] + (r.scan_counter % 7));
+      for (size_t i = 0; i < dist.size(); ++i)
+        dist[i] = static_cast<uint16_t>(dist[i] + (r.scan_counter % 7));
       std::lock_guard<std::mutex> lock(mutex);
       sent[r.scan_counter & 0xFFFFu] = {dist, rssi};
     };

@@ -134,7 +134,8 @@ struct ChattySensor {
   std::vector<std::string> operator()(const std::string& r) {
     std::vector<std::string> out{test::make_scan_telegram({500, 600, 700}, {10, 20, 30}, 16, counter++)};
     if (r.rfind("sMN SetAccessMode", 0) == 0) out.push_back("sAN SetAccessMode 1");
-    if (r.rfind("sMN mLMPsetscancfg", 0) == 0) out.push_back("sAN mLMPsetscancfg 0 1388 1 1388 FFF92230 225510");
+    if (r.rfind("sMN mLMPsetscancfg", 0) == 0)
+      out.push_back("sAN mLMPsetscancfg 0 1388 1 1388 FFF92230 225510");
     if (r.rfind("sWN LMDscandatacfg", 0) == 0) out.push_back("sWA LMDscandatacfg");
     if (r == "sMN LMCstartmeas") {
       out.push_back("sMA LMCstartmeas");
@@ -167,23 +168,29 @@ TEST(SessionFakeServer, ScansInterleavedWithRepliesGoToTheScanPathAndSetupComple
   std::atomic<int> scans{0};
   std::vector<SessionState> states;
   std::mutex states_mutex;
-  Lms100Session session(local_config(sensor.port()), [&](const LaserScan&) { ++scans; },
-                        [&](SessionState s, const std::string&) {
-                          std::lock_guard<std::mutex> lock(states_mutex);
-                          states.push_back(s);
-                        });
+  Lms100Session session(
+      local_config(sensor.port()), [&](const LaserScan&) { ++scans; },
+      [&](SessionState s, const std::string&) {
+        std::lock_guard<std::mutex> lock(states_mutex);
+        states.push_back(s);
+      });
   session.start_thread();
   const int64_t deadline = monotonic_us() + 3'000'000;
-  while (session.state() != SessionState::kStreaming && monotonic_us() < deadline) std::this_thread::sleep_for(5ms);
+  while (session.state() != SessionState::kStreaming && monotonic_us() < deadline)
+    std::this_thread::sleep_for(5ms);
   ASSERT_EQ(session.state(), SessionState::kStreaming);
   // Every reply came with a scan, so scans arrived before streaming was even asked for.
   EXPECT_GE(scans.load(), 10);
   EXPECT_EQ(chatty.status_polls.load(), 4);
   session.join();
   const auto requests = sensor.requests();
-  const std::vector<std::string> expected_start = {
-      "sEN LMDscandata 0", "sMN SetAccessMode 03 F4724744", "sMN mLMPsetscancfg +5000 +1 +5000 -450000 +2250000",
-      "sWN LMDscandatacfg 01 00 1 1 0 00 00 0 0 0 1 +1", "sMN LMCstartmeas", "sMN Run", "sRN STlms"};
+  const std::vector<std::string> expected_start = {"sEN LMDscandata 0",
+                                                   "sMN SetAccessMode 03 F4724744",
+                                                   "sMN mLMPsetscancfg +5000 +1 +5000 -450000 +2250000",
+                                                   "sWN LMDscandatacfg 01 00 1 1 0 00 00 0 0 0 1 +1",
+                                                   "sMN LMCstartmeas",
+                                                   "sMN Run",
+                                                   "sRN STlms"};
   ASSERT_GE(requests.size(), expected_start.size());
   for (size_t i = 0; i < expected_start.size(); ++i) EXPECT_EQ(requests[i], expected_start[i]);
   // Stop: stream off, login, stop measurement.
@@ -211,7 +218,8 @@ TEST(SessionFakeServer, SensorNeverReadyTimesOutAndReconnects) {
   Lms100Session session(c, [](const LaserScan&) {});
   session.start_thread();
   const int64_t deadline = monotonic_us() + 3'000'000;
-  while (session.counters().reconnects.load() < 2 && monotonic_us() < deadline) std::this_thread::sleep_for(10ms);
+  while (session.counters().reconnects.load() < 2 && monotonic_us() < deadline)
+    std::this_thread::sleep_for(10ms);
   session.join();
   EXPECT_GE(session.counters().reconnects.load(), 2u);
   EXPECT_GE(session.counters().timeouts.load(), 2u);
@@ -285,7 +293,8 @@ TEST(SessionFakeServer, StreakOfBadScansReconnects) {
   Lms100Session session(c, [](const LaserScan&) {});
   session.start_thread();
   const int64_t deadline = monotonic_us() + 3'000'000;
-  while (session.counters().reconnects.load() < 1 && monotonic_us() < deadline) std::this_thread::sleep_for(10ms);
+  while (session.counters().reconnects.load() < 1 && monotonic_us() < deadline)
+    std::this_thread::sleep_for(10ms);
   session.join();
   EXPECT_GE(session.counters().reconnects.load(), 1u);
   EXPECT_GE(session.counters().parse_errors.load(), 3u);

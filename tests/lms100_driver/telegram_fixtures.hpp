@@ -24,7 +24,8 @@ inline std::string read_telegram_payload(const std::string& name) {
 /// An LMS100-like sSN LMDscandata: 50 Hz, 0.5 deg, n beams, DIST1 (+ RSSI1 in the 16- or
 /// 8-bit block when rssi_bits is 16 or 8), time info on.
 inline std::string make_scan_telegram(const std::vector<unsigned>& dist_mm, const std::vector<unsigned>& rssi,
-                                      int rssi_bits, unsigned scan_counter = 0x37, unsigned t_start_us = 0x280F6) {
+                                      int rssi_bits, unsigned scan_counter = 0x37,
+                                      unsigned t_start_us = 0x280F6) {
   auto channel = [](const char* name, const std::vector<unsigned>& values) {
     std::string s = fmt::format("{} 3F800000 00000000 FFF92230 1388 {:X}", name, values.size());
     for (unsigned v : values) s += fmt::format(" {:X}", v);

@@ -22,8 +22,8 @@ std::string make_telegram(int beams) {
     for (int i = 0; i < beams; ++i) s += fmt::format(" {:X}", base + static_cast<unsigned>((i * 37) % 4000));
     return s;
   };
-  return "sSN LMDscandata 1 1 8D4C04 0 0 45FF 37 280F6 28A73 0 0 7 0 0 1388 168 0 2 " + channel("DIST1", 500) + " " +
-         channel("RSSI1", 20000) + " 0 0 0 0 1 7EA B 1C 13 5 7 1E240 0";
+  return "sSN LMDscandata 1 1 8D4C04 0 0 45FF 37 280F6 28A73 0 0 7 0 0 1388 168 0 2 " +
+         channel("DIST1", 500) + " " + channel("RSSI1", 20000) + " 0 0 0 0 1 7EA B 1C 13 5 7 1E240 0";
 }
 
 void BM_ParseLmdScandata541Rssi16(benchmark::State& state) {
