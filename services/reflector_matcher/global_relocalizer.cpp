@@ -72,6 +72,24 @@ void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection
   }
 }
 
+void GlobalRelocalizer::remove_duplicate_hypotheses() {
+  // Every triangle of a correct scan proposes nearly the same pose: verify it once. Poses are
+  // binned at 5 cm / 0.5 deg; a pair split by a bin edge is merely verified twice.
+  constexpr double kBinXy = 0.05, kBinTheta = 0.5 * M_PI / 180.0;
+  keyed_.clear();
+  for (size_t i = 0; i < hypotheses_.size(); ++i) {
+    const Pose2& h = hypotheses_[i];
+    const auto bin = [](double v, double width) { return static_cast<uint64_t>(std::llround(v / width) & 0x1FFFFF); };
+    keyed_.push_back({bin(h.x, kBinXy) | (bin(h.y, kBinXy) << 21) | (bin(h.theta, kBinTheta) << 42), i});
+  }
+  std::sort(keyed_.begin(), keyed_.end());
+  unique_.clear();
+  for (size_t k = 0; k < keyed_.size(); ++k) {
+    if (k == 0 || keyed_[k].first != keyed_[k - 1].first) unique_.push_back(hypotheses_[keyed_[k].second]);
+  }
+  hypotheses_.swap(unique_);
+}
+
 void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detections, MatchResult& result) {
   result.mode = MatchMode::kGlobal;
   result.status = MatchStatus::kLost;
@@ -84,6 +102,7 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   if (static_cast<int>(detections.size()) < config_.min_matches) return;
 
   generate_hypotheses(detections);
+  remove_duplicate_hypotheses();
   double best_score = -1e300;
   int best_matched = 0;
   Pose2 best_pose;

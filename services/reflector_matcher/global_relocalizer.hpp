@@ -14,6 +14,8 @@
 #include "common/reflector_detection.hpp"
 #include "common/reflector_map.hpp"
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace refloc {
@@ -36,6 +38,7 @@ class GlobalRelocalizer {
     double score;
   };
   void generate_hypotheses(const std::vector<ReflectorDetection>& detections);
+  void remove_duplicate_hypotheses();
 
   const ReflectorMap& map_;
   const MatcherConfig& config_;
@@ -43,6 +46,8 @@ class GlobalRelocalizer {
   HypothesisVerifier verifier_;
   std::vector<int> nearest_;  ///< detection indices used for triples, nearest first
   std::vector<Pose2> hypotheses_;
+  std::vector<Pose2> unique_;
+  std::vector<std::pair<uint64_t, size_t>> keyed_;
   std::vector<Scored> scored_;
   std::vector<Association> best_associations_;
 };

@@ -65,6 +65,51 @@ TEST(GlobalRelocalization, RecoversThePoseWithinNoise) {
   EXPECT_GT(checked, 150);
 }
 
+TEST(GlobalRelocalization, NeverWrongOkWithSpuriousAndMissedDetections) {
+  // Real scans: a shiny object now and then, a reflector hidden by a person now and then.
+  std::mt19937 rng(21);
+  const ReflectorMap map = testing::random_map(20, 40, 40, 1.0, rng);
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  std::uniform_real_distribution<double> u(-8, 8), coin(0, 1);
+  MatchResult result;
+  int wrong_ok = 0, ok = 0, with_five = 0, ok_with_five = 0;
+  for (int trial = 0; trial < 1000; ++trial) {
+    const Pose2 truth = random_pose(rng, 40, 40);
+    auto scan = testing::render_detections(map, truth, SyntheticSensor{}, rng);
+    if (!scan.detections.empty() && coin(rng) < 0.5) {
+      const size_t drop = static_cast<size_t>(trial) % scan.detections.size();
+      scan.detections.erase(scan.detections.begin() + static_cast<long>(drop));
+      scan.map_index.erase(scan.map_index.begin() + static_cast<long>(drop));
+    }
+    if (coin(rng) < 0.5) {
+      ReflectorDetection ghost;
+      ghost.laser_p_center = {u(rng), u(rng)};
+      scan.detections.push_back(ghost);
+      scan.map_index.push_back(-1);
+    }
+    matcher.match(scan.detections, nullptr, result);
+    // A match of the ghost is wrong by definition.
+    bool ghost_matched = false;
+    for (const auto& m : result.matches) ghost_matched = ghost_matched || scan.map_index[static_cast<size_t>(m.detection_index)] < 0;
+    if (result.status == MatchStatus::kOk) {
+      ++ok;
+      wrong_ok += ghost_matched || !approx_equal(result.map_T_laser, truth, 0.2, 5.0 * M_PI / 180.0);
+      if (!ghost_matched) {
+        for (const auto& m : result.matches) {
+          wrong_ok += map.reflectors[static_cast<size_t>(scan.map_index[static_cast<size_t>(m.detection_index)])].id != m.map_id;
+        }
+      }
+    }
+    if (scan.detections.size() >= 5) {
+      ++with_five;
+      ok_with_five += result.status == MatchStatus::kOk;
+    }
+  }
+  std::printf("with clutter: %d OK, %d/%d OK with >= 5 detections\n", ok, ok_with_five, with_five);
+  EXPECT_EQ(wrong_ok, 0);
+  EXPECT_GE(ok_with_five, with_five * 9 / 10);
+}
+
 TEST(GlobalRelocalization, FewerThanThreeDetectionsIsLost) {
   std::mt19937 rng(9);
   const ReflectorMap map = testing::random_map(20, 40, 40, 1.0, rng);

@@ -58,6 +58,23 @@ TEST(SymmetricLayout, TwoByFourGridIsNeverWrongOk) {
   EXPECT_EQ(t.wrong_ok, 0);
 }
 
+TEST(SymmetricLayout, APriorDisambiguatesTracking) {
+  const ReflectorMap map = grid_layout(2, 2, 8.0, 5.0);
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  std::mt19937 rng(18);
+  const Pose2 truth{3.0, 2.0, 0.4};
+  const auto scan = testing::render_detections(map, truth, testing::SyntheticSensor{}, rng);
+  ASSERT_GE(scan.detections.size(), 3u);
+  const PosePrior prior{Pose2{3.1, 1.9, 0.42}, Eigen::Vector3d(0.01, 0.01, 1e-3).asDiagonal()};
+  MatchResult result;
+  matcher.match(scan.detections, &prior, result);
+  EXPECT_EQ(result.mode, MatchMode::kTracking);
+  EXPECT_EQ(result.status, MatchStatus::kOk);
+  EXPECT_FALSE(testing::is_wrong_ok(result, scan, map, truth));
+  matcher.match(scan.detections, nullptr, result);  // the same scan without a prior
+  EXPECT_EQ(result.status, MatchStatus::kAmbiguous);
+}
+
 TEST(SymmetricLayout, OneExtraReflectorBreaksTheSymmetry) {
   ReflectorMap map = grid_layout(2, 2, 8.0, 5.0);
   MapReflector extra;

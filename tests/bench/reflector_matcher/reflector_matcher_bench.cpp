@@ -95,6 +95,30 @@ void BM_GlobalRelocalization(benchmark::State& state) {
 }
 BENCHMARK(BM_GlobalRelocalization)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
+/// Worst case for triangle lookup: a 32 x 32 grid at 10 m, every triangle repeated hundreds of times.
+void BM_GlobalRelocalizationRepetitiveGrid(benchmark::State& state) {
+  std::vector<Eigen::Vector2d> points;
+  for (int i = 0; i < 32; ++i)
+    for (int j = 0; j < 32; ++j) points.emplace_back(10.0 * i, 10.0 * j);
+  const ReflectorMap map = testing::map_from_points(points);
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> u(0.0, 310.0), ua(-M_PI, M_PI);
+  std::vector<testing::SyntheticScan> scans;
+  while (scans.size() < 16) {
+    auto scan = testing::render_detections(map, Pose2{u(rng), u(rng), ua(rng)}, testing::SyntheticSensor{}, rng);
+    if (scan.detections.size() >= 4) scans.push_back(std::move(scan));
+  }
+  ReflectorMatcher matcher(map, MatcherConfig{});
+  MatchResult result;
+  size_t k = 0, ok = 0;
+  for (auto _ : state) {
+    matcher.match(scans[k++ % scans.size()].detections, nullptr, result);
+    ok += result.status == MatchStatus::kOk;
+  }
+  state.counters["ok_fraction"] = static_cast<double>(ok) / static_cast<double>(k);
+}
+BENCHMARK(BM_GlobalRelocalizationRepetitiveGrid)->Unit(benchmark::kMillisecond);
+
 void BM_PaperMatch(benchmark::State& state) {
   const Scenario s = make_scenario(static_cast<int>(state.range(0)), 4);
   MatcherConfig config;
