@@ -8,6 +8,8 @@ namespace refloc {
 
 std::string request_login() { return "sMN SetAccessMode 03 F4724744"; }
 
+std::string request_read_scan_config() { return "sRN LMPscancfg"; }
+
 std::string request_set_scan_config(const ScanConfig& c) {
   return fmt::format("sMN mLMPsetscancfg {:+d} +1 {:+d} {:+d} {:+d}", static_cast<int64_t>(c.frequency_1e2hz),
                      static_cast<int64_t>(c.resolution_1e4deg), c.start_angle_1e4deg, c.stop_angle_1e4deg);
@@ -156,6 +158,18 @@ ParseResult check_scan_config_reply(std::string_view payload, const ScanConfig& 
     return ParseResult::failure(
         fmt::format("mLMPsetscancfg echoed {} (1/100 Hz) / {} (1/10000 deg), asked {} / {}", freq, res,
                     requested.frequency_1e2hz, requested.resolution_1e4deg));
+  }
+  return ParseResult::success();
+}
+
+ParseResult parse_scan_config_reply(std::string_view payload, ScanConfig& out) {
+  ColaAMessage m;
+  if (auto r = expect_head(payload, "sRA", "LMPscancfg", m); !r) return r;
+  ColaATokenizer tok(m.args);
+  uint32_t sectors = 0;
+  if (!tok.hex_u32(out.frequency_1e2hz) || !tok.hex_u32(sectors) || !tok.hex_u32(out.resolution_1e4deg) ||
+      !tok.hex_i32(out.start_angle_1e4deg) || !tok.hex_i32(out.stop_angle_1e4deg)) {
+    return ParseResult::failure("LMPscancfg reply: " + tok.error());
   }
   return ParseResult::success();
 }

@@ -12,6 +12,11 @@ namespace refloc {
 
 /// mLMPsetscancfg parameters. LMS1xx offers 50 Hz/0.5 deg, 25 Hz/0.25 deg and 25 Hz/0.5 deg.
 struct ScanConfig {
+  bool operator==(const ScanConfig& o) const {
+    return frequency_1e2hz == o.frequency_1e2hz && resolution_1e4deg == o.resolution_1e4deg &&
+           start_angle_1e4deg == o.start_angle_1e4deg && stop_angle_1e4deg == o.stop_angle_1e4deg;
+  }
+
   uint32_t frequency_1e2hz = 5000;    ///< [1/100 Hz]
   uint32_t resolution_1e4deg = 5000;  ///< [1/10000 deg]
   int32_t start_angle_1e4deg = -450000;
@@ -30,6 +35,8 @@ struct ScanDataOutputConfig {
 
 /// sMN SetAccessMode 03 F4724744 (authorized client).
 std::string request_login();
+/// sRN LMPscancfg: the scan configuration in use.
+std::string request_read_scan_config();
 /// sMN mLMPsetscancfg +5000 +1 +5000 -450000 +2250000 (decimal with sign, as SICK's examples).
 std::string request_set_scan_config(const ScanConfig& config);
 /// sWN LMDscandatacfg 01 00 1 1 0 00 00 0 0 0 1 +1
@@ -64,6 +71,8 @@ const char* sopas_error_name(uint32_t code);
 ParseResult check_login_reply(std::string_view payload);
 /// sAN mLMPsetscancfg <err> <freq> <n> <res> <start> <stop>: err 0 and the echo equals the request.
 ParseResult check_scan_config_reply(std::string_view payload, const ScanConfig& requested);
+/// sRA LMPscancfg <freq> <n sectors> <res> <start> <stop> [further sectors]: the first sector.
+ParseResult parse_scan_config_reply(std::string_view payload, ScanConfig& out);
 /// sAN LMCstartmeas 0 / sAN LMCstopmeas 0 / sAN Run 1 / sWA ... / sEA LMDscandata n.
 ParseResult check_simple_reply(std::string_view payload, std::string_view expected);
 /// sRA STlms <status> ...: the status (7 = ready for measurement).

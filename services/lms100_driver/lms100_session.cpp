@@ -148,10 +148,17 @@ std::string Lms100Session::run_connection() {
   const ScanConfig& scan = config_.scan;
   if (!step(request_login(), [](const std::string& r) { return check_login_reply(r); }))
     return "login: " + why;
-  if (config_.set_scan_config && !step(request_set_scan_config(scan), [&](const std::string& r) {
-        return check_scan_config_reply(r, scan);
-      })) {
-    return "mLMPsetscancfg: " + why;
+  if (config_.set_scan_config) {
+    // Setting the scan configuration re-spins the motor (30-45 s on a real LMS1xx, §2.4):
+    // only do it when the sensor is not already scanning the way we want.
+    const Wait w = transact(request_read_scan_config(), config_.reply_timeout_s, reply, why);
+    if (w != Wait::kReply && w != Wait::kSopasError) return "LMPscancfg: " + why;
+    ScanConfig current;
+    const bool same = w == Wait::kReply && parse_scan_config_reply(reply, current).ok() && current == scan;
+    if (!same && !step(request_set_scan_config(scan),
+                       [&](const std::string& r) { return check_scan_config_reply(r, scan); })) {
+      return "mLMPsetscancfg: " + why;
+    }
   }
   if (!step(request_set_scandata_output(config_.output),
             [](const std::string& r) { return check_simple_reply(r, "sWA LMDscandatacfg"); })) {

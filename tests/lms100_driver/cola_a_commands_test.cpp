@@ -18,6 +18,7 @@ TEST(ColaACommands, RequestsAreTheDocumentedStrings) {
   eight.rssi_16bit = false;
   eight.time_info = false;
   EXPECT_EQ(request_set_scandata_output(eight), "sWN LMDscandatacfg 01 00 1 0 0 00 00 0 0 0 0 +1");
+  EXPECT_EQ(request_read_scan_config(), "sRN LMPscancfg");
   EXPECT_EQ(request_start_measurement(), "sMN LMCstartmeas");
   EXPECT_EQ(request_stop_measurement(), "sMN LMCstopmeas");
   EXPECT_EQ(request_run(), "sMN Run");
@@ -74,6 +75,15 @@ TEST(ColaACommands, ReplyChecksAcceptRealRepliesAndExplainFailures) {
   ASSERT_FALSE(bad_freq.ok());
   EXPECT_NE(bad_freq.error.find("invalid frequency"), std::string::npos);
   EXPECT_FALSE(check_scan_config_reply("sAN mLMPsetscancfg 0 9C4", c25).ok());
+
+  ScanConfig read;
+  ASSERT_TRUE(parse_scan_config_reply("sRA LMPscancfg 1388 1 1388 FFF92230 225510", read).ok());
+  EXPECT_TRUE(read == ScanConfig{});
+  ASSERT_TRUE(parse_scan_config_reply("sRA LMPscancfg 9C4 1 9C4 FFFF3CB0 1C3A90", read).ok());
+  EXPECT_EQ(read.start_angle_1e4deg, -50000);
+  EXPECT_EQ(read.stop_angle_1e4deg, 1850000);
+  EXPECT_FALSE(parse_scan_config_reply("sRA LMPscancfg 9C4 1", read).ok());
+  EXPECT_FALSE(parse_scan_config_reply("sFA 3", read).ok());
 
   uint32_t status = 0;
   ASSERT_TRUE(parse_status_reply("sRA STlms 3 0 8 00:17:28 A 01.01.1970 0 0 0", status).ok());

@@ -131,9 +131,11 @@ size_t open_fd_count() {
 struct ChattySensor {
   std::atomic<unsigned> counter{100};
   std::atomic<int> status_polls{0};
+  std::string current_scan_config = "9C4 1 9C4 FFF92230 225510";  // 25 Hz: the driver must change it
   std::vector<std::string> operator()(const std::string& r) {
     std::vector<std::string> out{test::make_scan_telegram({500, 600, 700}, {10, 20, 30}, 16, counter++)};
     if (r.rfind("sMN SetAccessMode", 0) == 0) out.push_back("sAN SetAccessMode 1");
+    if (r == "sRN LMPscancfg") out.push_back("sRA LMPscancfg " + current_scan_config);
     if (r.rfind("sMN mLMPsetscancfg", 0) == 0)
       out.push_back("sAN mLMPsetscancfg 0 1388 1 1388 FFF92230 225510");
     if (r.rfind("sWN LMDscandatacfg", 0) == 0) out.push_back("sWA LMDscandatacfg");
@@ -186,6 +188,7 @@ TEST(SessionFakeServer, ScansInterleavedWithRepliesGoToTheScanPathAndSetupComple
   const auto requests = sensor.requests();
   const std::vector<std::string> expected_start = {"sEN LMDscandata 0",
                                                    "sMN SetAccessMode 03 F4724744",
+                                                   "sRN LMPscancfg",
                                                    "sMN mLMPsetscancfg +5000 +1 +5000 -450000 +2250000",
                                                    "sWN LMDscandatacfg 01 00 1 1 0 00 00 0 0 0 1 +1",
                                                    "sMN LMCstartmeas",
@@ -202,6 +205,24 @@ TEST(SessionFakeServer, ScansInterleavedWithRepliesGoToTheScanPathAndSetupComple
   EXPECT_EQ(session.counters().reconnects.load(), 0u);
   std::lock_guard<std::mutex> lock(states_mutex);
   EXPECT_NE(std::find(states.begin(), states.end(), SessionState::kWaitingReady), states.end());
+}
+
+TEST(SessionFakeServer, ScanConfigIsNotRewrittenWhenTheSensorAlreadyScansThatWay) {
+  ChattySensor chatty;
+  chatty.current_scan_config = "1388 1 1388 FFF92230 225510";
+  FakeSensor sensor([&](const std::string& r) { return chatty(r); });
+  Lms100Session session(local_config(sensor.port()), [](const LaserScan&) {});
+  session.start_thread();
+  const int64_t deadline = monotonic_us() + 3'000'000;
+  while (session.state() != SessionState::kStreaming && monotonic_us() < deadline)
+    std::this_thread::sleep_for(5ms);
+  ASSERT_EQ(session.state(), SessionState::kStreaming);
+  session.join();
+  const auto requests = sensor.requests();
+  EXPECT_EQ(std::count_if(requests.begin(), requests.end(),
+                          [](const std::string& r) { return r.rfind("sMN mLMPsetscancfg", 0) == 0; }),
+            0);
+  EXPECT_EQ(std::count(requests.begin(), requests.end(), std::string("sRN LMPscancfg")), 1);
 }
 
 TEST(SessionFakeServer, SensorNeverReadyTimesOutAndReconnects) {
