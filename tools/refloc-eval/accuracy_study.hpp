@@ -33,6 +33,8 @@ struct Measurement {
   int repeat = 0;
   Pose2 truth;
   bool published_ok = false;
+  MatchStatus match_status = MatchStatus::kLost;
+  SolveStatus solve_status = SolveStatus::kLost;
   Pose2 estimate;
   int reflectors_used = 0;
   bool has_crlb = false;
