@@ -33,9 +33,10 @@ void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection
   const double tol = config_.triangle_side_tolerance;
   const double max_err2 = config_.hypothesis_fit_max_error * config_.hypothesis_fit_max_error;
   const size_t n = nearest_.size();
-  for (size_t i = 0; i < n; ++i) {
-    for (size_t j = i + 1; j < n; ++j) {
-      for (size_t k = j + 1; k < n; ++k) {
+  const auto full = [&] { return static_cast<int>(hypotheses_.size()) >= config_.max_hypotheses; };
+  for (size_t i = 0; i < n && !full(); ++i) {
+    for (size_t j = i + 1; j < n && !full(); ++j) {
+      for (size_t k = j + 1; k < n && !full(); ++k) {
         const std::array<int, 3> det = {nearest_[i], nearest_[j], nearest_[k]};
         const std::array<Eigen::Vector2d, 3> laser_p = {detections[static_cast<size_t>(det[0])].laser_p_center,
                                                         detections[static_cast<size_t>(det[1])].laser_p_center,
@@ -47,6 +48,7 @@ void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection
           // try every vertex assignment whose sides agree, and let the rigid fit decide
           // (a mirrored assignment cannot fit a rotation).
           for (const auto& perm : kPermutations) {
+            if (full()) return;
             bool sides_agree = true;
             for (int m = 0; m < 3 && sides_agree; ++m) {
               sides_agree = std::abs(s.side[static_cast<size_t>(m)] - tri.side[static_cast<size_t>(perm[static_cast<size_t>(m)])]) <= tol;
@@ -64,7 +66,7 @@ void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection
             for (size_t m = 0; m < 3 && fits; ++m) {
               fits = (map_T_laser * laser_p[static_cast<size_t>(s.opposite[m])] - map_p[m]).squaredNorm() <= max_err2;
             }
-            if (fits && static_cast<int>(hypotheses_.size()) < config_.max_hypotheses) hypotheses_.push_back(map_T_laser);
+            if (fits) hypotheses_.push_back(map_T_laser);
           }
         });
       }
