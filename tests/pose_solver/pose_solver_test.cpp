@@ -49,6 +49,36 @@ TEST(PoseSolver, CovarianceIsConsistentNeesOverManyDraws) {
   EXPECT_NEAR(nees, 3.0, 0.3);
 }
 
+TEST(PoseSolver, DefaultModeIsMoreAccurateInPositionAndNoWorseInHeadingThanPaper) {
+  const ReflectorMap map = testing::hall_map();
+  std::mt19937 rng(46);
+  std::uniform_real_distribution<double> ux(3, 13), uy(3, 9), ua(-M_PI, M_PI);
+  SolverConfig paper_config;
+  paper_config.mode = SolverMode::kPaper;
+  PoseSolver paper(paper_config, testing::corner_mount()), joint(SolverConfig{}, testing::corner_mount());
+  PoseSolution a, b;
+  double paper_xy2 = 0, joint_xy2 = 0, paper_th2 = 0, joint_th2 = 0;
+  const int draws = 2000;
+  for (int i = 0; i < draws; ++i) {
+    // Headings away from +-pi, where eq. 7 would fail outright.
+    const Pose2 truth{ux(rng), uy(rng), 0.8 * ua(rng)};
+    const auto scan = testing::render_detections(map, truth * testing::corner_mount(), testing::SyntheticSensor{}, rng);
+    const auto matches = testing::true_matches(scan, map);
+    paper.solve(scan.detections, matches, a);
+    joint.solve(scan.detections, matches, b);
+    paper_xy2 += std::pow(a.map_T_robot.x - truth.x, 2) + std::pow(a.map_T_robot.y - truth.y, 2);
+    joint_xy2 += std::pow(b.map_T_robot.x - truth.x, 2) + std::pow(b.map_T_robot.y - truth.y, 2);
+    paper_th2 += std::pow(angle_diff(a.map_T_robot.theta, truth.theta), 2);
+    joint_th2 += std::pow(angle_diff(b.map_T_robot.theta, truth.theta), 2);
+  }
+  const double paper_xy = std::sqrt(paper_xy2 / draws), joint_xy = std::sqrt(joint_xy2 / draws);
+  const double paper_th = std::sqrt(paper_th2 / draws), joint_th = std::sqrt(joint_th2 / draws);
+  std::printf("RMS position error: paper %.2f mm, default %.2f mm; heading: paper %.3f mrad, default %.3f mrad\n",
+              1e3 * paper_xy, 1e3 * joint_xy, 1e3 * paper_th, 1e3 * joint_th);
+  EXPECT_LT(joint_xy, paper_xy);
+  EXPECT_LT(joint_th, 1.02 * paper_th);  // heading: about equal (both use every bearing)
+}
+
 TEST(PoseSolver, RejectsAnOutlierMatch) {
   const ReflectorMap map = testing::hall_map();
   const Pose2 truth{7.0, 5.0, -1.0};
