@@ -6,6 +6,7 @@
 #include "log_analysis.hpp"
 #include "log_report.hpp"
 
+#include <refloc/heartbeat_t.hpp>
 #include <refloc/pose2d_t.hpp>
 #include <refloc/twist_t.hpp>
 
@@ -119,6 +120,29 @@ TEST(LogStatistics, SummaryTextAndJsonCarryTheNumbers) {
   EXPECT_EQ(j["events"].get<int>(), 251);
   EXPECT_EQ(j["channels"][1]["channel"], "POSE");
   EXPECT_NEAR(j["channels"][1]["largest_gap_s"].get<double>(), 0.35, 1e-9);
+}
+
+TEST(LogStatistics, HeartbeatGapsAreJudgedPerServiceAgainstThreeSeconds) {
+  const std::string path = testing::temp_path("heartbeats.lcmlog");
+  {
+    testing::LcmLogWriter log(path);
+    for (int s = 0; s <= 10; ++s) {
+      for (const char* service : {"pose_solver", "navigator"}) {
+        // navigator is down from 3 s to 8 s: its beats at 4..7 s are missing.
+        if (std::string(service) == "navigator" && s > 3 && s < 8) continue;
+        heartbeat_t hb{};
+        hb.service = service;
+        log.write("HEARTBEAT", kT0 + s * 1'000'000 + 1'000, hb);
+      }
+    }
+  }
+  const MessageDecoder decoder;
+  const auto s = analyze_log(path, {}, decoder).summary;  // threshold 0.5 s < the 1 s heartbeat period
+  ASSERT_EQ(s.gaps.size(), 1u);
+  EXPECT_EQ(s.gaps[0].channel, "HEARTBEAT(navigator)");
+  EXPECT_NEAR(s.gaps[0].start_s, 3.0, 1e-9);
+  EXPECT_NEAR(s.gaps[0].length_s, 5.0, 1e-9);
+  EXPECT_EQ(channel(s, "HEARTBEAT").count, 11 + 7);
 }
 
 TEST(LogReader, MissingFileIsAConfigError) {

@@ -3,6 +3,7 @@
 #include "log_reader.hpp"
 
 #include <memory>
+#include <string_view>
 
 namespace refloc {
 
@@ -10,20 +11,23 @@ LogAnalysis analyze_log(const std::string& path, const LogAnalysisOptions& optio
   LogStatistics statistics(options.gap_threshold_s, options.max_gaps);
   PipelineLatency latency(options.pipeline_channels);
   for_each_log_event(path, [&](const LogEventView& e) {
-    statistics.add(*e.channel, e.log_utime, e.size, e.eventnum, decoder.type_name(e.data, e.size));
+    const char* type = decoder.type_name(e.data, e.size);
+    statistics.add(*e.channel, e.log_utime, e.size, e.eventnum, type);
+    std::optional<DecodedMessage> heartbeat;
+    if (type != nullptr && std::string_view(type) == "heartbeat_t") heartbeat = decoder.decode(e.data, e.size);
+    if (heartbeat) {
+      statistics.add_heartbeat(*e.channel, heartbeat->fields["service"].get<std::string>(), e.log_utime, e.eventnum);
+    }
     if (!options.latency) return;
     if (const int stage = latency.stage_of(*e.channel); stage >= 0) {
       if (const auto scan_utime = decoder.utime(e.data, e.size)) {
         latency.add(static_cast<size_t>(stage), *scan_utime, e.log_utime);
       }
-    } else if (*e.channel == options.heartbeat_channel) {
-      const auto m = decoder.decode(e.data, e.size);
-      if (m && m->type == "heartbeat_t") {
-        const auto& f = m->fields;
-        latency.add_processing({f["service"].get<std::string>(), f["processing_p50_us"].get<double>(),
-                                f["processing_p99_us"].get<double>(), f["messages_in"].get<int64_t>(),
-                                f["messages_out"].get<int64_t>()});
-      }
+    } else if (heartbeat && *e.channel == options.heartbeat_channel) {
+      const auto& f = heartbeat->fields;
+      latency.add_processing({f["service"].get<std::string>(), f["processing_p50_us"].get<double>(),
+                              f["processing_p99_us"].get<double>(), f["messages_in"].get<int64_t>(),
+                              f["messages_out"].get<int64_t>()});
     }
   });
   LogAnalysis analysis{statistics.summary(), std::nullopt};

@@ -4,8 +4,28 @@
 
 namespace refloc {
 
-LogStatistics::LogStatistics(double gap_threshold_s, size_t max_gaps)
-    : threshold_s_(gap_threshold_s), max_gaps_(max_gaps) {}
+LogStatistics::LogStatistics(double gap_threshold_s, size_t max_gaps, double heartbeat_silence_s)
+    : threshold_s_(gap_threshold_s), max_gaps_(max_gaps), heartbeat_silence_s_(heartbeat_silence_s) {}
+
+void LogStatistics::add_gap(LogGap gap) {
+  if (gaps_.size() < max_gaps_) {
+    gaps_.push_back(std::move(gap));
+  } else {
+    ++gaps_not_listed_;
+  }
+}
+
+void LogStatistics::add_heartbeat(const std::string& channel, const std::string& service, int64_t log_utime,
+                                  int64_t eventnum) {
+  auto [it, inserted] = last_heartbeat_utime_.try_emplace(service, log_utime);
+  if (!inserted) {
+    const double gap_s = static_cast<double>(log_utime - it->second) * 1e-6;
+    if (gap_s > std::max(threshold_s_, heartbeat_silence_s_)) {
+      add_gap({channel + "(" + service + ")", static_cast<double>(it->second - first_utime_) * 1e-6, gap_s, eventnum});
+    }
+    it->second = log_utime;
+  }
+}
 
 void LogStatistics::add(const std::string& channel, int64_t log_utime, size_t bytes, int64_t eventnum,
                         const char* type) {
@@ -31,13 +51,10 @@ void LogStatistics::add(const std::string& channel, int64_t log_utime, size_t by
       a.largest_gap_start_us = a.s.last_utime;
       a.s.largest_gap_event = eventnum;
     }
-    if (static_cast<double>(gap_us) * 1e-6 > threshold_s_) {
-      if (gaps_.size() < max_gaps_) {
-        gaps_.push_back({channel, static_cast<double>(a.s.last_utime - first_utime_) * 1e-6,
-                         static_cast<double>(gap_us) * 1e-6, eventnum});
-      } else {
-        ++gaps_not_listed_;
-      }
+    // Heartbeat gaps are judged per service (add_heartbeat).
+    if (static_cast<double>(gap_us) * 1e-6 > threshold_s_ && a.s.type != "heartbeat_t") {
+      add_gap({channel, static_cast<double>(a.s.last_utime - first_utime_) * 1e-6, static_cast<double>(gap_us) * 1e-6,
+               eventnum});
     }
   }
   ++a.s.count;

@@ -46,10 +46,14 @@ struct LogSummary {
 class LogStatistics {
  public:
   /// Gaps longer than gap_threshold_s are listed, at most max_gaps of them.
-  explicit LogStatistics(double gap_threshold_s = 0.5, size_t max_gaps = 100);
+  explicit LogStatistics(double gap_threshold_s = 0.5, size_t max_gaps = 100, double heartbeat_silence_s = 3.0);
 
   /// Account one event; type is the refloc type name or nullptr.
   void add(const std::string& channel, int64_t log_utime, size_t bytes, int64_t eventnum, const char* type);
+  /// A HEARTBEAT of one service. Every service beats on the same channel at the
+  /// same moment, so that channel's gaps say nothing; a service silent for longer
+  /// than max(gap threshold, heartbeat_silence_s) is listed as "HEARTBEAT(<service>)".
+  void add_heartbeat(const std::string& channel, const std::string& service, int64_t log_utime, int64_t eventnum);
   LogSummary summary() const;
 
  private:
@@ -58,8 +62,12 @@ class LogStatistics {
     int64_t largest_gap_us = -1;
     int64_t largest_gap_start_us = 0;
   };
+  void add_gap(LogGap gap);
+
   double threshold_s_;
   size_t max_gaps_;
+  double heartbeat_silence_s_;
+  std::map<std::string, int64_t> last_heartbeat_utime_;  ///< by service
   std::map<std::string, Accumulator> channels_;
   std::vector<LogGap> gaps_;
   size_t gaps_not_listed_ = 0;
