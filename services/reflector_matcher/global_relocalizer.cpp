@@ -110,7 +110,7 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   Pose2 best_pose;
   for (const Pose2& h : hypotheses_) {
     const Verification v = verifier_.verify(h, detections);
-    scored_.push_back({v.map_T_laser, v.score});
+    scored_.push_back({v.map_T_laser, v.score, v.matched});
     if (v.score > best_score) {
       best_score = v.score;
       best_matched = v.matched;
@@ -120,18 +120,24 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   }
   if (scored_.empty()) return;
 
+  // A substantially different pose rivals the best when it scores nearly as well, or when it
+  // explains as many detections and loses only on a few unseen reflectors: unmapped racks
+  // and people hide reflectors, so "not seen" is weak evidence.
   double runner_up = -1e300;
+  bool rival = false;
   for (const Scored& s : scored_) {
-    if (!approx_equal(s.map_T_laser, best_pose, config_.distinct_pose_distance, config_.distinct_pose_angle)) {
-      runner_up = std::max(runner_up, s.score);
-    }
+    if (approx_equal(s.map_T_laser, best_pose, config_.distinct_pose_distance, config_.distinct_pose_angle)) continue;
+    runner_up = std::max(runner_up, s.score);
+    const double margin = best_score - s.score;
+    rival = rival || margin < (1.0 - config_.ambiguity_ratio) * best_matched ||
+            (s.matched >= best_matched && margin < config_.ambiguity_missed_margin);
   }
   result.map_T_laser = best_pose;
   result.hypothesis_score = best_score;
   result.runner_up_score = scored_.size() > 1 && runner_up > -1e300 ? runner_up : 0.0;
   // Most detections of a real scan are reflectors: a pose that explains few of them is a
   // chance alignment (or the map has changed), not a fix.
-  if (best_matched < config_.min_matches || best_score <= 0.0 ||
+  if (best_matched < config_.min_matches ||
       best_matched < config_.min_explained_fraction * static_cast<double>(detections.size())) {
     return;
   }
@@ -139,8 +145,7 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
     const MapReflector& r = map_.reflectors[static_cast<size_t>(a.map_index)];
     result.matches.push_back({a.detection_index, r.id, r.map_p_center, r.radius});
   }
-  const bool ambiguous = runner_up > -1e300 && runner_up >= config_.ambiguity_ratio * best_score;
-  result.status = ambiguous ? MatchStatus::kAmbiguous : MatchStatus::kOk;
+  result.status = rival ? MatchStatus::kAmbiguous : MatchStatus::kOk;
 }
 
 }  // namespace refloc

@@ -36,6 +36,7 @@ class GlobalRelocalizer {
   struct Scored {
     Pose2 map_T_laser;
     double score;
+    int matched;
   };
   void generate_hypotheses(const std::vector<ReflectorDetection>& detections);
   void remove_duplicate_hypotheses();

@@ -49,7 +49,10 @@ Verification HypothesisVerifier::verify(const Pose2& map_T_laser, const std::vec
   if (associate(map_T_laser, detections, config_.verify_coarse_gate) >= 3) refit(detections, v.map_T_laser);
   v.matched = associate(v.map_T_laser, detections, config_.verify_fine_gate);
   for (size_t k = 0; k < predicted_.size(); ++k) {
-    if (predicted_[k].in_view && !predicted_matched_[k] && !is_shadowed(map_, predicted_, k)) ++v.missed;
+    if (predicted_[k].in_view && !predicted_matched_[k] && predicted_[k].range <= config_.missed_penalty_max_range &&
+        !is_shadowed(map_, predicted_, k)) {
+      ++v.missed;
+    }
   }
   v.unexplained = static_cast<int>(detections.size()) - v.matched;
   v.score = v.matched - config_.missed_penalty * v.missed - config_.unexplained_penalty * v.unexplained;

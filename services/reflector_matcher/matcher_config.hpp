@@ -39,9 +39,17 @@ struct MatcherConfig {
   double verify_coarse_gate = 0.5;        ///< [m] first association of a hypothesis
   double verify_fine_gate = 0.15;         ///< [m] after refitting with all coarse matches
   double missed_penalty = 0.5;            ///< score lost per expected, unoccluded, unseen reflector
+  /// Reflectors farther than this are not expected to be detected: at 0.5 deg a 120 mm
+  /// cylinder spans fewer than 2 beams beyond ~7 m, which the extractor may reject [m].
+  double missed_penalty_max_range = 8.0;
   double unexplained_penalty = 0.25;      ///< score lost per detection no map reflector explains
   double min_explained_fraction = 0.6;    ///< of the detections, for a global OK
-  double ambiguity_ratio = 0.8;           ///< runner-up/best at or above this -> AMBIGUOUS
+  /// AMBIGUOUS when best - runner-up < (1 - ratio) * (detections the best explains): with no
+  /// penalties this is runner-up >= ratio * best.
+  double ambiguity_ratio = 0.8;
+  /// A pose explaining as many detections as the best is a rival unless the best scores at
+  /// least this much higher (0.5 per unseen reflector: 2.0 = four more unseen).
+  double ambiguity_missed_margin = 2.0;
   double distinct_pose_distance = 0.2;    ///< [m] a runner-up must differ at least this much ...
   double distinct_pose_angle = 5.0 * M_PI / 180.0;  ///< [rad] ... or this much from the best
 

@@ -51,10 +51,14 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
   m.verify_coarse_gate = config.number("/relocalization/verify_coarse_gate_m", m.verify_coarse_gate, 0.001, 5.0);
   m.verify_fine_gate = config.number("/relocalization/verify_fine_gate_m", m.verify_fine_gate, 0.001, 5.0);
   m.missed_penalty = config.number("/relocalization/missed_penalty", m.missed_penalty, 0.0, 10.0);
+  m.missed_penalty_max_range =
+      config.number("/relocalization/missed_penalty_max_range_m", m.missed_penalty_max_range, 0.0, 100.0);
   m.unexplained_penalty = config.number("/relocalization/unexplained_penalty", m.unexplained_penalty, 0.0, 10.0);
   m.min_explained_fraction =
       config.number("/relocalization/min_explained_fraction", m.min_explained_fraction, 0.0, 1.0);
   m.ambiguity_ratio = config.number("/relocalization/ambiguity_ratio", m.ambiguity_ratio, 0.0, 1.0);
+  m.ambiguity_missed_margin =
+      config.number("/relocalization/ambiguity_missed_margin", m.ambiguity_missed_margin, 0.0, 100.0);
   m.distinct_pose_distance =
       config.number("/relocalization/distinct_pose_distance_m", m.distinct_pose_distance, 0.0, 100.0);
   m.distinct_pose_angle =
