@@ -3,8 +3,8 @@
 // reader under test sees exactly what lcm-logger would have written.
 
 #include <gtest/gtest.h>
-#include <lcm/lcm-cpp.hpp>
 #include <unistd.h>
+#include <lcm/lcm-cpp.hpp>
 
 #include <cstdint>
 #include <fstream>

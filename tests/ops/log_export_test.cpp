@@ -99,8 +99,7 @@ TEST(LogExport, CsvOfOneChannelGoesToTheGivenFileWithScalarColumns) {
   EXPECT_EQ(r.csv_files.at("LASER_POSE"), out);
   const auto lines = testing::read_lines(out);
   ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(lines[0],
-            "log_utime,channel,utime,x,y,theta,covariance,status,reflectors_used,residual");
+  EXPECT_EQ(lines[0], "log_utime,channel,utime,x,y,theta,covariance,status,reflectors_used,residual");
   EXPECT_EQ(lines[1], std::to_string(kT0 + 9'000) + ",LASER_POSE," + std::to_string(kT0) +
                           ",1.5,-2.25,0.125,0.0001;0.0;0.0;0.0;0.0001;0.0;0.0;0.0;0.0,1,4,0.003");
 }
@@ -156,9 +155,7 @@ TEST(LogExport, ForeignMessagesAreMarkedInJsonlAndSkippedInCsv) {
   EXPECT_EQ(line["bytes"].get<int>(), 9);
 }
 
-TEST(LogExport, InvalidRegexIsAConfigError) {
-  EXPECT_THROW(ChannelSelector({"LASER_(("}), ConfigError);
-}
+TEST(LogExport, InvalidRegexIsAConfigError) { EXPECT_THROW(ChannelSelector({"LASER_(("}), ConfigError); }
 
 TEST(LogExport, CsvPathPerChannel) {
   EXPECT_EQ(csv_path_for_channel("out/x.csv", "POSE", true), "out/x.csv");

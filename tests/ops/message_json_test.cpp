@@ -1,8 +1,8 @@
 // Decoding of every refloc type by fingerprint into JSON, and the CSV
 // flattening rules for nested structs and arrays of structs.
 
-#include "csv_flatten.hpp"
 #include "message_json.hpp"
+#include "csv_flatten.hpp"
 
 #include <gtest/gtest.h>
 #include <algorithm>
@@ -100,14 +100,25 @@ TEST(MessageDecoder, NestedStructsAndFloatsAsSent) {
 TEST(CsvFlatten, ArraysOfStructsGetOneColumnPerFieldAndNestedArraysAreOmitted) {
   const MessageDecoder d;
   const auto columns = csv_columns(*d.prototype("reflector_detections_t"));
-  const std::vector<std::string> expected{"utime", "scan_counter", "clusters_considered", "clusters_rejected",
-                                          "nreflectors", "reflectors.x", "reflectors.y", "reflectors.range",
-                                          "reflectors.bearing", "reflectors.utime", "reflectors.first_beam",
-                                          "reflectors.nbeams", "reflectors.mean_rssi", "reflectors.roundness_m",
+  const std::vector<std::string> expected{"utime",
+                                          "scan_counter",
+                                          "clusters_considered",
+                                          "clusters_rejected",
+                                          "nreflectors",
+                                          "reflectors.x",
+                                          "reflectors.y",
+                                          "reflectors.range",
+                                          "reflectors.bearing",
+                                          "reflectors.utime",
+                                          "reflectors.first_beam",
+                                          "reflectors.nbeams",
+                                          "reflectors.mean_rssi",
+                                          "reflectors.roundness_m",
                                           "reflectors.fitted_radius_m"};
   EXPECT_EQ(columns, expected);
   const auto match_columns = csv_columns(*d.prototype("reflector_matches_t"));
-  EXPECT_NE(std::find(match_columns.begin(), match_columns.end(), "matches.detection.x"), match_columns.end());
+  EXPECT_NE(std::find(match_columns.begin(), match_columns.end(), "matches.detection.x"),
+            match_columns.end());
   EXPECT_NE(std::find(match_columns.begin(), match_columns.end(), "matches.map_id"), match_columns.end());
 }
 

@@ -49,14 +49,15 @@ TEST_F(RefLocStatusWithPeer, JsonReportsPeerPidStateAndRates) {
   EXPECT_EQ(peer["service"], "lcm_echo_peer");
   EXPECT_EQ(peer["pid"].get<int>(), peer_.pid());
   EXPECT_EQ(peer["state"], "OK");
-  EXPECT_LT(peer["age_s"].get<double>(), 1.0);  // the peer beats every 0.2 s
+  EXPECT_LT(peer["age_s"].get<double>(), 1.0);              // the peer beats every 0.2 s
   EXPECT_DOUBLE_EQ(peer["rate_in_hz"].get<double>(), 0.0);  // nobody sends it data
 }
 
 TEST(RefLocStatus, StoppedServiceTurnsStaleAndExitsOne) {
   testing::ChildProcess peer({kBin + "lcm_echo_peer", "--lcm-url", kUrl}, "/dev/null");
   // Listen 5 s; the peer dies after 1 s, so its last heartbeat is > 3 s old at the end.
-  const std::string cmd = kBin + "refloc-status --once --wait 5 --json --expect lcm_echo_peer --lcm-url '" + kUrl + "'";
+  const std::string cmd =
+      kBin + "refloc-status --once --wait 5 --json --expect lcm_echo_peer --lcm-url '" + kUrl + "'";
   FILE* pipe = popen(cmd.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   std::this_thread::sleep_for(std::chrono::seconds(1));

@@ -26,9 +26,9 @@ TEST(ServiceNotify, RealServiceSendsReadyWatchdogAndStopping) {
   ASSERT_TRUE(socket.bound());
   setenv("NOTIFY_SOCKET", socket.path().c_str(), 1);
   setenv("WATCHDOG_USEC", "400000", 1);  // WatchdogSec=0.4 -> a ping every 0.2 s
-  testing::ChildProcess peer({std::string(REFLOC_BINARY_DIR) + "/bin/lcm_echo_peer", "--lcm-url",
-                              "udpm://239.255.76.67:7667?ttl=0"},
-                             "/dev/null");
+  testing::ChildProcess peer(
+      {std::string(REFLOC_BINARY_DIR) + "/bin/lcm_echo_peer", "--lcm-url", "udpm://239.255.76.67:7667?ttl=0"},
+      "/dev/null");
   unsetenv("NOTIFY_SOCKET");
   unsetenv("WATCHDOG_USEC");
   ASSERT_GT(peer.pid(), 0);

@@ -7,16 +7,19 @@
 
 namespace refloc {
 
-LogAnalysis analyze_log(const std::string& path, const LogAnalysisOptions& options, const MessageDecoder& decoder) {
+LogAnalysis analyze_log(const std::string& path, const LogAnalysisOptions& options,
+                        const MessageDecoder& decoder) {
   LogStatistics statistics(options.gap_threshold_s, options.max_gaps);
   PipelineLatency latency(options.pipeline_channels);
   for_each_log_event(path, [&](const LogEventView& e) {
     const char* type = decoder.type_name(e.data, e.size);
     statistics.add(*e.channel, e.log_utime, e.size, e.eventnum, type);
     std::optional<DecodedMessage> heartbeat;
-    if (type != nullptr && std::string_view(type) == "heartbeat_t") heartbeat = decoder.decode(e.data, e.size);
+    if (type != nullptr && std::string_view(type) == "heartbeat_t")
+      heartbeat = decoder.decode(e.data, e.size);
     if (heartbeat) {
-      statistics.add_heartbeat(*e.channel, heartbeat->fields["service"].get<std::string>(), e.log_utime, e.eventnum);
+      statistics.add_heartbeat(*e.channel, heartbeat->fields["service"].get<std::string>(), e.log_utime,
+                               e.eventnum);
     }
     if (!options.latency) return;
     if (const int stage = latency.stage_of(*e.channel); stage >= 0) {
@@ -35,8 +38,8 @@ LogAnalysis analyze_log(const std::string& path, const LogAnalysisOptions& optio
   return analysis;
 }
 
-LogExportResult export_log(const std::string& path, const LogSummary& summary, const LogExportRequest& request,
-                           const MessageDecoder& decoder) {
+LogExportResult export_log(const std::string& path, const LogSummary& summary,
+                           const LogExportRequest& request, const MessageDecoder& decoder) {
   LogExportResult result;
   const ChannelSelector selector(request.channel_patterns);
   for (const auto& c : summary.channels) {

@@ -27,7 +27,8 @@ struct LogAnalysis {
 };
 
 /// Read the whole log once. Throws ConfigError when it cannot be opened.
-LogAnalysis analyze_log(const std::string& path, const LogAnalysisOptions& options, const MessageDecoder& decoder);
+LogAnalysis analyze_log(const std::string& path, const LogAnalysisOptions& options,
+                        const MessageDecoder& decoder);
 
 struct LogExportRequest {
   std::vector<std::string> channel_patterns;  ///< see ChannelSelector; empty = all
@@ -44,7 +45,7 @@ struct LogExportResult {
 
 /// Export the selected channels; `summary` (from analyze_log) tells which channels
 /// exist, so a single selected channel gets csv_path itself.
-LogExportResult export_log(const std::string& path, const LogSummary& summary, const LogExportRequest& request,
-                           const MessageDecoder& decoder);
+LogExportResult export_log(const std::string& path, const LogSummary& summary,
+                           const LogExportRequest& request, const MessageDecoder& decoder);
 
 }  // namespace refloc

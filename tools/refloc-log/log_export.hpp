@@ -56,7 +56,8 @@ class JsonlExporter {
 /// columns come from the type of its first decodable message.
 class CsvExporter {
  public:
-  CsvExporter(std::function<std::string(const std::string& channel)> path_for_channel, const MessageDecoder& decoder);
+  CsvExporter(std::function<std::string(const std::string& channel)> path_for_channel,
+              const MessageDecoder& decoder);
   void add(const LogEventView& event);
   const ExportCounts& counts() const { return counts_; }
   /// Files written so far, by channel.

@@ -17,13 +17,18 @@ std::string iso_utc(int64_t utime) {
 }
 
 std::string stats_line(const std::string& name, const LatencyStats& s) {
-  if (s.count == 0) return fmt::format("  {:<40} {:>7} {:>9} {:>9} {:>9} {:>9}\n", name, 0, "-", "-", "-", "-");
-  return fmt::format("  {:<40} {:>7} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f}\n", name, s.count, s.p50_ms, s.p99_ms,
-                     s.mean_ms, s.max_ms);
+  if (s.count == 0)
+    return fmt::format("  {:<40} {:>7} {:>9} {:>9} {:>9} {:>9}\n", name, 0, "-", "-", "-", "-");
+  return fmt::format("  {:<40} {:>7} {:>9.2f} {:>9.2f} {:>9.2f} {:>9.2f}\n", name, s.count, s.p50_ms,
+                     s.p99_ms, s.mean_ms, s.max_ms);
 }
 
 nlohmann::ordered_json stats_json(const LatencyStats& s) {
-  return {{"count", s.count}, {"p50_ms", s.p50_ms}, {"p99_ms", s.p99_ms}, {"mean_ms", s.mean_ms}, {"max_ms", s.max_ms}};
+  return {{"count", s.count},
+          {"p50_ms", s.p50_ms},
+          {"p99_ms", s.p99_ms},
+          {"mean_ms", s.mean_ms},
+          {"max_ms", s.max_ms}};
 }
 
 }  // namespace
@@ -31,15 +36,16 @@ nlohmann::ordered_json stats_json(const LatencyStats& s) {
 std::string format_log_summary(const LogSummary& summary) {
   std::string out;
   if (summary.events == 0) return "empty log: no events\n";
-  out += fmt::format("{} events on {} channels over {:.3f} s ({} .. {})\n", summary.events, summary.channels.size(),
-                     summary.duration_s, iso_utc(summary.first_utime), iso_utc(summary.last_utime));
+  out += fmt::format("{} events on {} channels over {:.3f} s ({} .. {})\n", summary.events,
+                     summary.channels.size(), summary.duration_s, iso_utc(summary.first_utime),
+                     iso_utc(summary.last_utime));
   out += fmt::format("largest gap on all channels: {:.3f} s at {:.3f} s\n", summary.largest_gap_s,
                      summary.largest_gap_at_s);
-  out += fmt::format("{:<22} {:<24} {:>8} {:>9} {:>11} {:>10} {:>10}\n", "CHANNEL", "TYPE", "COUNT", "RATE[Hz]",
-                     "BYTES", "MAXGAP[s]", "AT[s]");
+  out += fmt::format("{:<22} {:<24} {:>8} {:>9} {:>11} {:>10} {:>10}\n", "CHANNEL", "TYPE", "COUNT",
+                     "RATE[Hz]", "BYTES", "MAXGAP[s]", "AT[s]");
   for (const auto& c : summary.channels) {
-    out += fmt::format("{:<22} {:<24} {:>8} {:>9.2f} {:>11} {:>10.3f} {:>10.3f}\n", c.channel, c.type, c.count,
-                       c.rate_hz, c.bytes, c.largest_gap_s, c.largest_gap_at_s);
+    out += fmt::format("{:<22} {:<24} {:>8} {:>9.2f} {:>11} {:>10.3f} {:>10.3f}\n", c.channel, c.type,
+                       c.count, c.rate_hz, c.bytes, c.largest_gap_s, c.largest_gap_at_s);
   }
   out += fmt::format("gaps longer than {:.3f} s: {}\n", summary.gap_threshold_s,
                      summary.gaps.size() + summary.gaps_not_listed);
@@ -67,7 +73,10 @@ nlohmann::ordered_json log_summary_to_json(const LogSummary& summary) {
   }
   nlohmann::ordered_json gaps = nlohmann::ordered_json::array();
   for (const auto& g : summary.gaps) {
-    gaps.push_back({{"channel", g.channel}, {"start_s", g.start_s}, {"length_s", g.length_s}, {"end_event", g.end_event}});
+    gaps.push_back({{"channel", g.channel},
+                    {"start_s", g.start_s},
+                    {"length_s", g.length_s},
+                    {"end_event", g.end_event}});
   }
   return {{"events", summary.events},
           {"first_utime", summary.first_utime},
@@ -83,12 +92,14 @@ nlohmann::ordered_json log_summary_to_json(const LogSummary& summary) {
 
 std::string format_latency_report(const LatencyReport& report) {
   std::string out = "scan-to-pose latency from log receive times [ms]\n";
-  out += fmt::format("  {:<40} {:>7} {:>9} {:>9} {:>9} {:>9}\n", "STAGE", "SCANS", "P50", "P99", "MEAN", "MAX");
+  out +=
+      fmt::format("  {:<40} {:>7} {:>9} {:>9} {:>9} {:>9}\n", "STAGE", "SCANS", "P50", "P99", "MEAN", "MAX");
   for (size_t i = 0; i < report.stages.size(); ++i) {
     out += stats_line(report.channels[i] + " -> " + report.channels[i + 1], report.stages[i]);
   }
   if (!report.channels.empty()) {
-    out += stats_line(report.channels.front() + " -> " + report.channels.back() + " (total)", report.end_to_end);
+    out +=
+        stats_line(report.channels.front() + " -> " + report.channels.back() + " (total)", report.end_to_end);
   }
   out += "  scans seen per channel:";
   for (size_t i = 0; i < report.channels.size(); ++i) {
@@ -99,8 +110,8 @@ std::string format_latency_report(const LatencyReport& report) {
     out += "handler time per service from its last HEARTBEAT [us]\n";
     out += fmt::format("  {:<24} {:>9} {:>9} {:>10} {:>10}\n", "SERVICE", "P50", "P99", "IN", "OUT");
     for (const auto& p : report.processing) {
-      out += fmt::format("  {:<24} {:>9.0f} {:>9.0f} {:>10} {:>10}\n", p.service, p.p50_us, p.p99_us, p.messages_in,
-                         p.messages_out);
+      out += fmt::format("  {:<24} {:>9.0f} {:>9.0f} {:>10} {:>10}\n", p.service, p.p50_us, p.p99_us,
+                         p.messages_in, p.messages_out);
     }
   }
   return out;

@@ -21,7 +21,8 @@ void LogStatistics::add_heartbeat(const std::string& channel, const std::string&
   if (!inserted) {
     const double gap_s = static_cast<double>(log_utime - it->second) * 1e-6;
     if (gap_s > std::max(threshold_s_, heartbeat_silence_s_)) {
-      add_gap({channel + "(" + service + ")", static_cast<double>(it->second - first_utime_) * 1e-6, gap_s, eventnum});
+      add_gap({channel + "(" + service + ")", static_cast<double>(it->second - first_utime_) * 1e-6, gap_s,
+               eventnum});
     }
     it->second = log_utime;
   }
@@ -53,8 +54,8 @@ void LogStatistics::add(const std::string& channel, int64_t log_utime, size_t by
     }
     // Heartbeat gaps are judged per service (add_heartbeat).
     if (static_cast<double>(gap_us) * 1e-6 > threshold_s_ && a.s.type != "heartbeat_t") {
-      add_gap({channel, static_cast<double>(a.s.last_utime - first_utime_) * 1e-6, static_cast<double>(gap_us) * 1e-6,
-               eventnum});
+      add_gap({channel, static_cast<double>(a.s.last_utime - first_utime_) * 1e-6,
+               static_cast<double>(gap_us) * 1e-6, eventnum});
     }
   }
   ++a.s.count;

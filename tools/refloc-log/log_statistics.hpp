@@ -17,10 +17,10 @@ struct ChannelSummary {
   int64_t bytes = 0;
   int64_t first_utime = 0;  ///< [us], log time
   int64_t last_utime = 0;
-  double rate_hz = 0.0;          ///< (count - 1) / (last - first); 0 with fewer than 2 messages
-  double largest_gap_s = 0.0;    ///< longest time between two consecutive messages [s]
-  double largest_gap_at_s = 0.0; ///< start of that gap, from the start of the log [s]
-  int64_t largest_gap_event = 0; ///< event number of the message that ended it
+  double rate_hz = 0.0;           ///< (count - 1) / (last - first); 0 with fewer than 2 messages
+  double largest_gap_s = 0.0;     ///< longest time between two consecutive messages [s]
+  double largest_gap_at_s = 0.0;  ///< start of that gap, from the start of the log [s]
+  int64_t largest_gap_event = 0;  ///< event number of the message that ended it
 };
 
 struct LogGap {
@@ -46,14 +46,16 @@ struct LogSummary {
 class LogStatistics {
  public:
   /// Gaps longer than gap_threshold_s are listed, at most max_gaps of them.
-  explicit LogStatistics(double gap_threshold_s = 0.5, size_t max_gaps = 100, double heartbeat_silence_s = 3.0);
+  explicit LogStatistics(double gap_threshold_s = 0.5, size_t max_gaps = 100,
+                         double heartbeat_silence_s = 3.0);
 
   /// Account one event; type is the refloc type name or nullptr.
   void add(const std::string& channel, int64_t log_utime, size_t bytes, int64_t eventnum, const char* type);
   /// A HEARTBEAT of one service. Every service beats on the same channel at the
   /// same moment, so that channel's gaps say nothing; a service silent for longer
   /// than max(gap threshold, heartbeat_silence_s) is listed as "HEARTBEAT(<service>)".
-  void add_heartbeat(const std::string& channel, const std::string& service, int64_t log_utime, int64_t eventnum);
+  void add_heartbeat(const std::string& channel, const std::string& service, int64_t log_utime,
+                     int64_t eventnum);
   LogSummary summary() const;
 
  private:

@@ -17,17 +17,20 @@ int main(int argc, char** argv) {
   refloc::LogExportRequest request;
   bool json = false;
   app.add_option("log", log_path, "LCM log file (lcm-logger output)")->required();
-  app.add_option("--channel,-c", request.channel_patterns,
-                 "channel to export; a regular expression matching the whole name; repeatable (default: all)");
+  app.add_option(
+      "--channel,-c", request.channel_patterns,
+      "channel to export; a regular expression matching the whole name; repeatable (default: all)");
   app.add_option("--csv", request.csv_path,
                  "write CSV here; with several channels one file each: <stem>_<CHANNEL><ext>");
   app.add_option("--jsonl", request.jsonl_path, "write JSON lines here (all selected channels, every field)");
-  app.add_option("--gap-threshold", options.gap_threshold_s, "list gaps between messages longer than this [s]")
+  app.add_option("--gap-threshold", options.gap_threshold_s,
+                 "list gaps between messages longer than this [s]")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   app.add_option("--max-gaps", options.max_gaps, "list at most this many gaps")->capture_default_str();
-  app.add_flag("--latency", options.latency,
-               "scan-to-pose latency: LMS100_SCAN -> REFLECTORS -> REFLECTOR_MATCHES -> LASER_POSE matched by utime");
+  app.add_flag(
+      "--latency", options.latency,
+      "scan-to-pose latency: LMS100_SCAN -> REFLECTORS -> REFLECTOR_MATCHES -> LASER_POSE matched by utime");
   app.add_option("--pipeline", options.pipeline_channels, "pipeline channels for --latency, comma separated")
       ->delimiter(',')
       ->capture_default_str();
@@ -47,16 +50,17 @@ int main(int argc, char** argv) {
       if (analysis.latency) std::printf("%s", refloc::format_latency_report(*analysis.latency).c_str());
     }
     if (!request.jsonl_path.empty()) {
-      std::fprintf(stderr, "%s: %lld lines (%lld not decodable) from %zu channels\n", request.jsonl_path.c_str(),
-                   static_cast<long long>(exported.jsonl.written), static_cast<long long>(exported.jsonl.undecoded),
-                   exported.channels.size());
+      std::fprintf(stderr, "%s: %lld lines (%lld not decodable) from %zu channels\n",
+                   request.jsonl_path.c_str(), static_cast<long long>(exported.jsonl.written),
+                   static_cast<long long>(exported.jsonl.undecoded), exported.channels.size());
     }
     for (const auto& [channel, file] : exported.csv_files) {
       std::fprintf(stderr, "%s: channel %s\n", file.c_str(), channel.c_str());
     }
     if (!request.csv_path.empty()) {
       std::fprintf(stderr, "CSV: %lld rows, %lld not decodable (skipped), %lld of a changed type (skipped)\n",
-                   static_cast<long long>(exported.csv.written), static_cast<long long>(exported.csv.undecoded),
+                   static_cast<long long>(exported.csv.written),
+                   static_cast<long long>(exported.csv.undecoded),
                    static_cast<long long>(exported.csv.type_changed));
     }
     if ((!request.csv_path.empty() || !request.jsonl_path.empty()) && exported.channels.empty()) {

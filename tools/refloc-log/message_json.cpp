@@ -42,17 +42,25 @@ int64_t read_be_int64(const uint8_t* data) {
 }
 
 OrderedJson to_json(const reflector_t& m) {
-  return {{"x", m.x},           {"y", m.y},
+  return {{"x", m.x},
+          {"y", m.y},
           {"covariance", fixed_array(m.covariance)},
-          {"range", m.range},   {"bearing", m.bearing},
-          {"utime", m.utime},   {"first_beam", m.first_beam},
-          {"nbeams", m.nbeams}, {"mean_rssi", f32(m.mean_rssi)},
-          {"roundness_m", f32(m.roundness_m)}, {"fitted_radius_m", f32(m.fitted_radius_m)}};
+          {"range", m.range},
+          {"bearing", m.bearing},
+          {"utime", m.utime},
+          {"first_beam", m.first_beam},
+          {"nbeams", m.nbeams},
+          {"mean_rssi", f32(m.mean_rssi)},
+          {"roundness_m", f32(m.roundness_m)},
+          {"fitted_radius_m", f32(m.fitted_radius_m)}};
 }
 
 OrderedJson to_json(const reflector_match_t& m) {
-  return {{"detection", to_json(m.detection)}, {"map_id", m.map_id},    {"map_x", m.map_x},
-          {"map_y", m.map_y},                  {"map_radius", m.map_radius}};
+  return {{"detection", to_json(m.detection)},
+          {"map_id", m.map_id},
+          {"map_x", m.map_x},
+          {"map_y", m.map_y},
+          {"map_radius", m.map_radius}};
 }
 
 OrderedJson to_json(const heartbeat_t& m) {
@@ -95,9 +103,14 @@ OrderedJson to_json(const laser_scan_t& m) {
 }
 
 OrderedJson to_json(const nav_goal_t& m) {
-  return {{"utime", m.utime},       {"goal_id", m.goal_id},   {"xy_tolerance", m.xy_tolerance},
-          {"heading_tolerance", m.heading_tolerance},         {"max_speed", m.max_speed},
-          {"nwaypoints", m.nwaypoints}, {"x", m.x},           {"y", m.y},
+  return {{"utime", m.utime},
+          {"goal_id", m.goal_id},
+          {"xy_tolerance", m.xy_tolerance},
+          {"heading_tolerance", m.heading_tolerance},
+          {"max_speed", m.max_speed},
+          {"nwaypoints", m.nwaypoints},
+          {"x", m.x},
+          {"y", m.y},
           {"theta", m.theta}};
 }
 
@@ -114,9 +127,16 @@ OrderedJson to_json(const nav_status_t& m) {
 }
 
 OrderedJson to_json(const odometry_t& m) {
-  return {{"utime", m.utime}, {"x", m.x},   {"y", m.y},   {"theta", m.theta},
-          {"vx", m.vx},       {"vy", m.vy}, {"wz", m.wz}, {"covariance", fixed_array(m.covariance)},
-          {"distance", m.distance},         {"slip_indicator", m.slip_indicator}};
+  return {{"utime", m.utime},
+          {"x", m.x},
+          {"y", m.y},
+          {"theta", m.theta},
+          {"vx", m.vx},
+          {"vy", m.vy},
+          {"wz", m.wz},
+          {"covariance", fixed_array(m.covariance)},
+          {"distance", m.distance},
+          {"slip_indicator", m.slip_indicator}};
 }
 
 OrderedJson to_json(const pose2d_t& m) {
@@ -158,9 +178,13 @@ OrderedJson to_json(const reflector_matches_t& m) {
           {"matches", std::move(matches)}};
 }
 
-OrderedJson to_json(const twist_t& m) { return {{"utime", m.utime}, {"vx", m.vx}, {"vy", m.vy}, {"wz", m.wz}}; }
+OrderedJson to_json(const twist_t& m) {
+  return {{"utime", m.utime}, {"vx", m.vx}, {"vy", m.vy}, {"wz", m.wz}};
+}
 
-OrderedJson to_json(const wheel_encoders_t& m) { return {{"utime", m.utime}, {"ticks", fixed_array(m.ticks)}}; }
+OrderedJson to_json(const wheel_encoders_t& m) {
+  return {{"utime", m.utime}, {"ticks", fixed_array(m.ticks)}};
+}
 
 // Arrays of structs get one default element in the prototype (see prototype()).
 template <class Message>

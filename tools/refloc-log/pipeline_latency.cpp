@@ -20,7 +20,8 @@ LatencyStats latency_stats(std::vector<double> durations_us) {
   s.p50_ms = window.percentile(0.50) * 1e-3;
   s.p99_ms = window.percentile(0.99) * 1e-3;
   s.max_ms = *std::max_element(durations_us.begin(), durations_us.end()) * 1e-3;
-  s.mean_ms = std::accumulate(durations_us.begin(), durations_us.end(), 0.0) / static_cast<double>(s.count) * 1e-3;
+  s.mean_ms =
+      std::accumulate(durations_us.begin(), durations_us.end(), 0.0) / static_cast<double>(s.count) * 1e-3;
   return s;
 }
 
@@ -52,7 +53,8 @@ LatencyReport PipelineLatency::report() const {
   for (const auto& [scan_utime, times] : log_utime_by_scan_) {
     for (size_t i = 0; i < n; ++i) r.reached[i] += times[i] >= 0 ? 1 : 0;
     for (size_t i = 0; i + 1 < n; ++i) {
-      if (times[i] >= 0 && times[i + 1] >= 0) stage_us[i].push_back(static_cast<double>(times[i + 1] - times[i]));
+      if (times[i] >= 0 && times[i + 1] >= 0)
+        stage_us[i].push_back(static_cast<double>(times[i + 1] - times[i]));
     }
     if (n >= 2 && times.front() >= 0 && times.back() >= 0) {
       total_us.push_back(static_cast<double>(times.back() - times.front()));

@@ -30,10 +30,10 @@ struct ServiceProcessing {
 };
 
 struct LatencyReport {
-  std::vector<std::string> channels;  ///< the pipeline, first to last
-  std::vector<size_t> reached;        ///< scans seen on each channel
-  std::vector<LatencyStats> stages;   ///< channels[i] -> channels[i + 1]
-  LatencyStats end_to_end;            ///< channels.front() -> channels.back()
+  std::vector<std::string> channels;          ///< the pipeline, first to last
+  std::vector<size_t> reached;                ///< scans seen on each channel
+  std::vector<LatencyStats> stages;           ///< channels[i] -> channels[i + 1]
+  LatencyStats end_to_end;                    ///< channels.front() -> channels.back()
   std::vector<ServiceProcessing> processing;  ///< by service name
 };
 

@@ -8,12 +8,18 @@ namespace refloc {
 std::string heartbeat_state_name(int8_t state) {
   // Values of heartbeat_t::STATE_* (lcmtypes/heartbeat_t.lcm); a test checks they agree.
   switch (state) {
-    case 0: return "STARTING";
-    case 1: return "OK";
-    case 2: return "DEGRADED";
-    case 3: return "ERROR";
-    case 4: return "STOPPING";
-    default: return "STATE_" + std::to_string(static_cast<int>(state));
+    case 0:
+      return "STARTING";
+    case 1:
+      return "OK";
+    case 2:
+      return "DEGRADED";
+    case 3:
+      return "ERROR";
+    case 4:
+      return "STOPPING";
+    default:
+      return "STATE_" + std::to_string(static_cast<int>(state));
   }
 }
 
@@ -27,7 +33,8 @@ void HeartbeatTable::update(const HeartbeatSample& heartbeat, double receive_tim
     e.rate_base = heartbeat;
     e.rate_base_received_s = receive_time_s;
   } else {
-    const bool same_process = heartbeat.pid == e.last.pid && heartbeat.messages_in >= e.rate_base.messages_in &&
+    const bool same_process = heartbeat.pid == e.last.pid &&
+                              heartbeat.messages_in >= e.rate_base.messages_in &&
                               heartbeat.messages_out >= e.rate_base.messages_out;
     if (!same_process) {
       // Counters restarted from zero: no rate until the new process has sent two heartbeats.
@@ -69,7 +76,8 @@ ServiceStatus HeartbeatTable::status_of(const std::string& service, const Entry*
   return s;
 }
 
-std::vector<ServiceStatus> HeartbeatTable::rows(const std::vector<std::string>& expected, double now_s) const {
+std::vector<ServiceStatus> HeartbeatTable::rows(const std::vector<std::string>& expected,
+                                                double now_s) const {
   std::vector<ServiceStatus> out;
   std::set<std::string> listed;
   for (const auto& name : expected) {
@@ -91,6 +99,8 @@ std::vector<std::string> missing_services(const std::vector<ServiceStatus>& rows
   return names;
 }
 
-int status_exit_code(const std::vector<ServiceStatus>& rows) { return missing_services(rows).empty() ? 0 : 1; }
+int status_exit_code(const std::vector<ServiceStatus>& rows) {
+  return missing_services(rows).empty() ? 0 : 1;
+}
 
 }  // namespace refloc

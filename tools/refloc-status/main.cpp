@@ -79,7 +79,8 @@ int run(const std::string& lcm_url, const std::vector<std::string>& expected, bo
         double max_age_s, bool json) {
   const std::string url = resolve_lcm_url(lcm_url);
   auto lcm = std::make_unique<lcm::LCM>(url);
-  if (!lcm->good()) throw std::runtime_error("cannot open LCM at '" + url + "' (is there a multicast route?)");
+  if (!lcm->good())
+    throw std::runtime_error("cannot open LCM at '" + url + "' (is there a multicast route?)");
   Listener listener{HeartbeatTable(max_age_s), 0};
   lcm->subscribeFunction("HEARTBEAT", &Listener::on_heartbeat, &listener);
   std::signal(SIGINT, on_signal);
@@ -95,7 +96,8 @@ int run(const std::string& lcm_url, const std::vector<std::string>& expected, bo
       next_print_s += 1.0;
       if (next_print_s < now_s) next_print_s = now_s + 1.0;
     }
-    const int timeout_ms = static_cast<int>(std::clamp((next_print_s - monotonic_s()) * 1000.0, 0.0, 100.0)) + 1;
+    const int timeout_ms =
+        static_cast<int>(std::clamp((next_print_s - monotonic_s()) * 1000.0, 0.0, 100.0)) + 1;
     lcm->handleTimeout(timeout_ms);
   }
   return status_exit_code(listener.table.rows(expected, monotonic_s()));
@@ -105,10 +107,12 @@ int run(const std::string& lcm_url, const std::vector<std::string>& expected, bo
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  CLI::App app{"Live table of every refloc service from HEARTBEAT; exit 1 when an expected service is missing"};
+  CLI::App app{
+      "Live table of every refloc service from HEARTBEAT; exit 1 when an expected service is missing"};
   std::string lcm_url;
-  std::vector<std::string> expected{"lms100_driver", "reflector_extractor", "reflector_matcher", "pose_solver",
-                                    "mecanum_odometry", "pose_fusion", "navigator", "robot_sim"};
+  std::vector<std::string> expected{
+      "lms100_driver",    "reflector_extractor", "reflector_matcher", "pose_solver",
+      "mecanum_odometry", "pose_fusion",         "navigator",         "robot_sim"};
   bool once = false;
   bool json = false;
   double wait_s = 3.0;
@@ -118,13 +122,14 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->capture_default_str();
   app.add_flag("--once", once, "listen for --wait seconds, print once and exit");
-  app.add_option("--wait", wait_s, "seconds to listen with --once [s]")->check(CLI::Range(0.1, 3600.0))->capture_default_str();
+  app.add_option("--wait", wait_s, "seconds to listen with --once [s]")
+      ->check(CLI::Range(0.1, 3600.0))
+      ->capture_default_str();
   app.add_option("--max-age", max_age_s, "a heartbeat older than this counts as missing [s]")
       ->check(CLI::Range(0.1, 3600.0))
       ->capture_default_str();
   app.add_flag("--json", json, "print JSON (one document per refresh) instead of the table");
   CLI11_PARSE(app, argc, argv);
-  return refloc::guarded_main("refloc-status", [&] {
-    return refloc::run(lcm_url, expected, once, wait_s, max_age_s, json);
-  });
+  return refloc::guarded_main("refloc-status",
+                              [&] { return refloc::run(lcm_url, expected, once, wait_s, max_age_s, json); });
 }

@@ -25,8 +25,9 @@ std::string errors_column(const ServiceStatus& s) {
 }  // namespace
 
 std::string format_status_table(const std::vector<ServiceStatus>& rows) {
-  std::string out = fmt::format("{:<20} {:>8} {:<14} {:>8} {:>8} {:>9} {:>9} {:>6}  {:<24} {}\n", "SERVICE", "PID",
-                                "STATE", "IN/s", "OUT/s", "P50[us]", "P99[us]", "AGE[s]", "ERRORS", "DETAIL");
+  std::string out =
+      fmt::format("{:<20} {:>8} {:<14} {:>8} {:>8} {:>9} {:>9} {:>6}  {:<24} {}\n", "SERVICE", "PID", "STATE",
+                  "IN/s", "OUT/s", "P50[us]", "P99[us]", "AGE[s]", "ERRORS", "DETAIL");
   for (const auto& s : rows) {
     if (!s.seen) {
       out += fmt::format("{:<20} {:>8} {:<14} {:>8} {:>8} {:>9} {:>9} {:>6}  {:<24} {}\n", s.service, "-",
@@ -34,7 +35,8 @@ std::string format_status_table(const std::vector<ServiceStatus>& rows) {
       continue;
     }
     std::string detail = s.last.state_detail;
-    if (s.pid_changes > 0) detail += fmt::format("{}(pid changed {}x)", detail.empty() ? "" : " ", s.pid_changes);
+    if (s.pid_changes > 0)
+      detail += fmt::format("{}(pid changed {}x)", detail.empty() ? "" : " ", s.pid_changes);
     out += fmt::format("{:<20} {:>8} {:<14} {:>8} {:>8} {:>9.0f} {:>9.0f} {:>6.1f}  {:<24} {}\n", s.service,
                        s.last.pid, state_column(s), rate_column(s.rate_in_hz, s.has_rates()),
                        rate_column(s.rate_out_hz, s.has_rates()), s.last.processing_p50_us,

@@ -5,13 +5,13 @@
 #include "log_analysis.hpp"
 
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 #include <lcm/lcm-cpp.hpp>
 #include <refloc/laser_scan_t.hpp>
 #include <refloc/odometry_t.hpp>
 #include <refloc/pose2d_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
-#include <unistd.h>
 
 #include <cstdio>
 #include <memory>
@@ -116,7 +116,8 @@ void BM_ExportScansCsv(benchmark::State& state) {
   const MessageDecoder decoder;
   const auto summary = analyze_log(log.path, {}, decoder).summary;
   const std::string out = log.path + ".csv";
-  for (auto _ : state) benchmark::DoNotOptimize(export_log(log.path, summary, {{"LMS100_SCAN"}, "", out}, decoder));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(export_log(log.path, summary, {{"LMS100_SCAN"}, "", out}, decoder));
   std::remove(out.c_str());
   report(state, log);
 }
