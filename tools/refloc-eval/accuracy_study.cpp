@@ -130,13 +130,14 @@ std::vector<Pose2> random_drivable_poses(const sim::World& world, int n, double 
 }
 
 StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Pose2& robot_T_laser,
+                      const PipelineConfigs& paper_configs, const PipelineConfigs& default_configs,
                       const std::vector<Pose2>& poses, const StudyConfig& config, const ProgressCallback& progress) {
   sim::ScanRenderConfig render_config;
   render_config.sensor.range_sigma = config.range_sigma;
   render_config.sensor.range_offset = config.range_offset;
   sim::ScanRenderer renderer(render_config);
-  LocalizationPipeline paper(PipelineMode::kPaper, map, robot_T_laser, config.range_sigma);
-  LocalizationPipeline best(PipelineMode::kDefault, map, robot_T_laser, config.range_sigma);
+  LocalizationPipeline paper(PipelineMode::kPaper, paper_configs, map, robot_T_laser);
+  LocalizationPipeline best(PipelineMode::kDefault, default_configs, map, robot_T_laser);
   std::mt19937_64 rng(config.seed);
   LaserScan scan;
   std::vector<ReflectorBeam> crlb_beams;

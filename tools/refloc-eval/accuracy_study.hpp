@@ -79,6 +79,7 @@ using ProgressCallback = std::function<void(size_t done, size_t total)>;
 
 /// Render every pose config.repeats times and localize each scan in both modes.
 StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Pose2& robot_T_laser,
+                      const PipelineConfigs& paper_configs, const PipelineConfigs& default_configs,
                       const std::vector<Pose2>& poses, const StudyConfig& config, const ProgressCallback& progress);
 
 nlohmann::json to_json(const ModeSummary& summary);

@@ -1,24 +1,19 @@
 #include "localization_pipeline.hpp"
 
+#include "common/json_config.hpp"
+#include "pose_solver/solver_config_file.hpp"
+#include "reflector_extractor/extractor_config_file.hpp"
+#include "reflector_matcher/matcher_config_file.hpp"
+
 namespace refloc {
 namespace {
 
-ExtractorConfig extractor_config(PipelineMode mode, double range_sigma) {
-  ExtractorConfig c = mode == PipelineMode::kPaper ? ExtractorConfig::paper() : ExtractorConfig{};
-  c.clustering.range_sigma = range_sigma;
-  return c;
-}
-
-MatcherConfig matcher_config(PipelineMode mode) {
-  MatcherConfig c;
-  c.mode = mode == PipelineMode::kPaper ? MatcherMode::kPaper : MatcherMode::kDefault;
-  return c;
-}
-
-SolverConfig solver_config(PipelineMode mode) {
-  SolverConfig c;
-  c.mode = mode == PipelineMode::kPaper ? SolverMode::kPaper : SolverMode::kDefault;
-  return c;
+/// The file's document with "/mode" set, so one file yields both modes' settings.
+JsonConfig with_mode(const std::string& path, PipelineMode mode) {
+  const JsonConfig file = JsonConfig::load_file(path);
+  nlohmann::json document = file.document();
+  document["mode"] = to_string(mode);
+  return JsonConfig(std::move(document), path);
 }
 
 }  // namespace
@@ -30,13 +25,28 @@ bool PipelineOutput::published_ok() const {
          (solution.status == SolveStatus::kOk || solution.status == SolveStatus::kDegraded);
 }
 
-LocalizationPipeline::LocalizationPipeline(PipelineMode mode, const ReflectorMap& map, const Pose2& robot_T_laser,
-                                           double range_sigma)
+PipelineConfigs load_pipeline_configs(PipelineMode mode, const std::string& extractor_file,
+                                      const std::string& matcher_file, const std::string& solver_file) {
+  PipelineConfigs configs;
+  const JsonConfig extractor = with_mode(extractor_file, mode);
+  configs.extractor = parse_extractor_service_config(extractor).extractor;
+  extractor.reject_unknown_keys();
+  const JsonConfig matcher = with_mode(matcher_file, mode);
+  configs.matcher = parse_matcher_service_config(matcher, ".").matcher;
+  matcher.reject_unknown_keys();
+  const JsonConfig solver = with_mode(solver_file, mode);
+  configs.solver = parse_solver_service_config(solver).solver;
+  solver.reject_unknown_keys();
+  return configs;
+}
+
+LocalizationPipeline::LocalizationPipeline(PipelineMode mode, const PipelineConfigs& configs, const ReflectorMap& map,
+                                           const Pose2& robot_T_laser)
     : mode_(mode),
       robot_T_laser_(robot_T_laser),
-      extractor_(extractor_config(mode, range_sigma)),
-      matcher_(map, matcher_config(mode)),
-      solver_(solver_config(mode), robot_T_laser) {}
+      extractor_(configs.extractor),
+      matcher_(map, configs.matcher),
+      solver_(configs.solver, robot_T_laser) {}
 
 const PipelineOutput& LocalizationPipeline::run(const LaserScan& scan, const Pose2* prior_map_T_robot) {
   output_.detections = &extractor_.extract(scan);

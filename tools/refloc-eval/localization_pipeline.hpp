@@ -24,9 +24,22 @@ struct PipelineOutput {
   bool published_ok() const;
 };
 
+/// The three libraries' settings for one mode.
+struct PipelineConfigs {
+  ExtractorConfig extractor;
+  MatcherConfig matcher;
+  SolverConfig solver;
+};
+
+/// Each mode's settings read from the services' own config files (the deployed
+/// configuration, so a study measures what runs), with "mode" forced to mode.
+PipelineConfigs load_pipeline_configs(PipelineMode mode, const std::string& extractor_file,
+                                      const std::string& matcher_file, const std::string& solver_file);
+
 class LocalizationPipeline {
  public:
-  LocalizationPipeline(PipelineMode mode, const ReflectorMap& map, const Pose2& robot_T_laser, double range_sigma);
+  LocalizationPipeline(PipelineMode mode, const PipelineConfigs& configs, const ReflectorMap& map,
+                       const Pose2& robot_T_laser);
   /// Localize from one scan; with prior (map_T_robot) the default mode tracks, else relocalizes.
   const PipelineOutput& run(const LaserScan& scan, const Pose2* prior_map_T_robot = nullptr);
   PipelineMode mode() const { return mode_; }

@@ -24,6 +24,9 @@ namespace {
 struct Options {
   std::string world_file;
   std::string robot_file = "deploy/config/robot.json";
+  std::string extractor_file = "deploy/config/reflector_extractor.json";
+  std::string matcher_file = "deploy/config/reflector_matcher.json";
+  std::string solver_file = "deploy/config/pose_solver.json";
   double sigma_mm = 12.0;
   double offset_mm = 0.0;
   uint64_t seed = 1;
@@ -114,7 +117,14 @@ int run(const std::string& command, Options o) {
   std::mt19937_64 pose_rng(o.seed + 1000);
   const std::vector<Pose2> poses = paper_table ? paper_table_poses() : random_drivable_poses(world, o.n, 0.4, pose_rng);
   if (poses.empty()) throw ConfigError(o.world_file + ": /drivable_areas: no pose could be drawn (missing or too small)");
-  const StudyResult r = run_study(world, map, robot.robot_T_laser, poses, config,
+  PipelineConfigs paper_configs =
+      load_pipeline_configs(PipelineMode::kPaper, o.extractor_file, o.matcher_file, o.solver_file);
+  PipelineConfigs default_configs =
+      load_pipeline_configs(PipelineMode::kDefault, o.extractor_file, o.matcher_file, o.solver_file);
+  // The clustering threshold and the fit weights follow the simulated sensor's noise.
+  paper_configs.extractor.clustering.range_sigma = config.range_sigma;
+  default_configs.extractor.clustering.range_sigma = config.range_sigma;
+  const StudyResult r = run_study(world, map, robot.robot_T_laser, paper_configs, default_configs, poses, config,
                                   o.progress ? ProgressCallback(print_progress) : ProgressCallback());
   if (paper_table) print_paper_table(r, poses, config.repeats);
   fmt::print("\n{} over {} poses x {} scans, sigma {:.1f} mm, offset {:.1f} mm, world {}\n", command, poses.size(),
@@ -153,6 +163,9 @@ int main(int argc, char** argv) {
   auto add_common = [&o](CLI::App* c) {
     c->add_option("--world", o.world_file, "world file (default: paper_cell.json / world_demo.json)");
     c->add_option("--robot", o.robot_file, "robot config (laser mount)")->capture_default_str();
+    c->add_option("--extractor-config", o.extractor_file, "reflector_extractor config ('mode' is set per pipeline)")->capture_default_str();
+    c->add_option("--matcher-config", o.matcher_file, "reflector_matcher config (its map_file is not used: the world's map is)")->capture_default_str();
+    c->add_option("--solver-config", o.solver_file, "pose_solver config")->capture_default_str();
     c->add_option("--sigma-mm", o.sigma_mm, "LMS100 range noise, 1 sigma [mm]")->capture_default_str()->check(CLI::Range(0.0, 200.0));
     c->add_option("--offset-mm", o.offset_mm, "systematic range offset [mm]")->capture_default_str()->check(CLI::Range(-100.0, 100.0));
     c->add_option("--seed", o.seed, "random seed")->capture_default_str();
