@@ -3,19 +3,21 @@
 # start robot_sim and every service under supervisord (deploy/refloc), record
 # an LCM log, drive the demo mission, print the true arrival error at each
 # waypoint and the localization RMSE, stop everything.
-#   deploy/run_mission.sh [--build-dir DIR] [--mission FILE] [--json FILE]
+#   deploy/run_mission.sh [--build-dir DIR] [--mission FILE] [--json FILE] [--no-motion-compensation]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 build_dir=build
 mission=deploy/config/mission_demo.json
 json=""
+motion_compensation=true
 while [ $# -gt 0 ]; do
   case "$1" in
     --build-dir) build_dir="$2"; shift 2 ;;
     --mission) mission="$2"; shift 2 ;;
     --json) json="$2"; shift 2 ;;
-    -h|--help) sed -n '2,7p' "$0"; exit 0 ;;
+    --no-motion-compensation) motion_compensation=false; shift ;;
+    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
     *) echo "run_mission: unknown argument '$1' (see --help)" >&2; exit 64 ;;
   esac
 done
@@ -25,6 +27,13 @@ mkdir -p "$run_dir"
 export REFLOC_BUILD="$root/$build_dir"
 export REFLOC_LOG_DIR="$run_dir"
 export REFLOC_RUN_DIR="$run_dir/supervisor"
+if [ "$motion_compensation" = false ]; then
+  # Same configs, but the extractor leaves detections where their beams saw them.
+  export REFLOC_CONFIG_DIR="$run_dir/config"
+  cp -r "$root/deploy/config" "$REFLOC_CONFIG_DIR"
+  sed -i 's/"motion_compensation": true/"motion_compensation": false/' "$REFLOC_CONFIG_DIR/reflector_extractor.json"
+  grep -q '"motion_compensation": false' "$REFLOC_CONFIG_DIR/reflector_extractor.json"
+fi
 export LCM_DEFAULT_URL="${LCM_DEFAULT_URL:-udpm://239.255.76.67:7667?ttl=0}"
 # The simulator's LMS100 emulator listens on loopback.
 export REFLOC_ARGS_lms100_driver="${REFLOC_ARGS_lms100_driver:---host 127.0.0.1}"
