@@ -49,4 +49,38 @@ bool from_lcm(const laser_scan_t& msg, LaserScan& out) {
   return true;
 }
 
+reflector_t to_lcm(const ReflectorDetection& d) {
+  reflector_t r{};
+  r.x = d.laser_p_center.x();
+  r.y = d.laser_p_center.y();
+  r.covariance[0] = d.covariance(0, 0);
+  r.covariance[1] = d.covariance(0, 1);
+  r.covariance[2] = d.covariance(1, 0);
+  r.covariance[3] = d.covariance(1, 1);
+  r.range = d.range;
+  r.bearing = d.bearing;
+  r.utime = d.utime;
+  r.first_beam = d.first_beam;
+  r.nbeams = d.num_beams;
+  r.mean_rssi = static_cast<float>(d.mean_rssi);
+  r.roundness_m = static_cast<float>(d.roundness_m);
+  r.fitted_radius_m = static_cast<float>(d.fitted_radius_m);
+  return r;
+}
+
+ReflectorDetection from_lcm(const reflector_t& r) {
+  ReflectorDetection d;
+  d.laser_p_center = {r.x, r.y};
+  d.covariance << r.covariance[0], r.covariance[1], r.covariance[2], r.covariance[3];
+  d.range = r.range;
+  d.bearing = r.bearing;
+  d.utime = r.utime;
+  d.first_beam = r.first_beam;
+  d.num_beams = r.nbeams;
+  d.mean_rssi = r.mean_rssi;
+  d.roundness_m = r.roundness_m;
+  d.fitted_radius_m = r.fitted_radius_m;
+  return d;
+}
+
 }  // namespace refloc

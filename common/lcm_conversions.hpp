@@ -3,9 +3,11 @@
 // by main.cpp files and tools.
 
 #include "common/laser_scan.hpp"
+#include "common/reflector_detection.hpp"
 #include "common/se2.hpp"
 
 #include <refloc/laser_scan_t.hpp>
+#include <refloc/reflector_t.hpp>
 
 namespace refloc {
 
@@ -13,5 +15,8 @@ laser_scan_t to_lcm(const LaserScan& scan);
 /// Returns false (leaving out untouched) when the message is inconsistent
 /// (nrssi neither 0 nor nranges, non-positive increment).
 bool from_lcm(const laser_scan_t& msg, LaserScan& out);
+
+reflector_t to_lcm(const ReflectorDetection& detection);
+ReflectorDetection from_lcm(const reflector_t& msg);
 
 }  // namespace refloc

@@ -5,6 +5,7 @@
 #include "pose_solver/solver_config_file.hpp"
 
 #include "common/guarded_main.hpp"
+#include "common/lcm_conversions.hpp"
 #include "common/json_config.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_runtime.hpp"
@@ -49,15 +50,8 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     detections.clear();
     matches.clear();
     for (const reflector_match_t& m : msg.matches) {
-      ReflectorDetection d;
-      d.laser_p_center = {m.detection.x, m.detection.y};
-      d.covariance << m.detection.covariance[0], m.detection.covariance[1], m.detection.covariance[2],
-          m.detection.covariance[3];
-      d.range = m.detection.range;
-      d.bearing = m.detection.bearing;
-      d.utime = m.detection.utime;
       matches.push_back({static_cast<int>(detections.size()), m.map_id, {m.map_x, m.map_y}, m.map_radius});
-      detections.push_back(d);
+      detections.push_back(from_lcm(m.detection));
     }
     out.utime = msg.utime;
     if (msg.status == reflector_matches_t::STATUS_OK) {

@@ -24,25 +24,6 @@
 namespace refloc {
 namespace {
 
-reflector_t to_message(const ReflectorDetection& d) {
-  reflector_t r{};
-  r.x = d.laser_p_center.x();
-  r.y = d.laser_p_center.y();
-  r.covariance[0] = d.covariance(0, 0);
-  r.covariance[1] = d.covariance(0, 1);
-  r.covariance[2] = d.covariance(1, 0);
-  r.covariance[3] = d.covariance(1, 1);
-  r.range = d.range;
-  r.bearing = d.bearing;
-  r.utime = d.utime;
-  r.first_beam = d.first_beam;
-  r.nbeams = d.num_beams;
-  r.mean_rssi = static_cast<float>(d.mean_rssi);
-  r.roundness_m = static_cast<float>(d.roundness_m);
-  r.fitted_radius_m = static_cast<float>(d.fitted_radius_m);
-  return r;
-}
-
 int run(const std::string& lcm_url, const std::string& config_path, const std::string& robot_path) {
   ExtractorServiceConfig config;
   if (!config_path.empty()) {
@@ -92,7 +73,7 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     out.clusters_considered = stats.clusters_considered;
     out.clusters_rejected = stats.rejected();
     out.reflectors.clear();
-    for (const ReflectorDetection& d : detections) out.reflectors.push_back(to_message(d));
+    for (const ReflectorDetection& d : detections) out.reflectors.push_back(to_lcm(d));
     out.nreflectors = static_cast<int32_t>(out.reflectors.size());  // LCM trusts the length field
     runtime.publish(config.output_channel, out);
   });

@@ -5,6 +5,7 @@
 #include "reflector_matcher/reflector_matcher.hpp"
 
 #include "common/guarded_main.hpp"
+#include "common/lcm_conversions.hpp"
 #include "common/json_config.hpp"
 #include "common/reflector_map.hpp"
 #include "common/robot_config.hpp"
@@ -22,21 +23,6 @@
 
 namespace refloc {
 namespace {
-
-ReflectorDetection from_message(const reflector_t& r) {
-  ReflectorDetection d;
-  d.laser_p_center = {r.x, r.y};
-  d.covariance << r.covariance[0], r.covariance[1], r.covariance[2], r.covariance[3];
-  d.range = r.range;
-  d.bearing = r.bearing;
-  d.utime = r.utime;
-  d.first_beam = r.first_beam;
-  d.num_beams = r.nbeams;
-  d.mean_rssi = r.mean_rssi;
-  d.roundness_m = r.roundness_m;
-  d.fitted_radius_m = r.fitted_radius_m;
-  return d;
-}
 
 /// map_T_laser prior (with covariance) from a fused map_T_robot.
 PosePrior prior_from_robot_pose(const pose2d_t& pose, const Pose2& robot_T_laser) {
@@ -90,7 +76,7 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   runtime.subscribe<pose2d_t>(config.prior_channel, [&](const pose2d_t& msg) { last_pose = msg; });
   runtime.subscribe<reflector_detections_t>(config.input_channel, [&](const reflector_detections_t& msg) {
     detections.clear();
-    for (const reflector_t& r : msg.reflectors) detections.push_back(from_message(r));
+    for (const reflector_t& r : msg.reflectors) detections.push_back(from_lcm(r));
     std::optional<PosePrior> prior;
     if (last_pose && last_pose->status == pose2d_t::STATUS_OK &&
         std::llabs(msg.utime - last_pose->utime) <= max_age_us) {
