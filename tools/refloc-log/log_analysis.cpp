@@ -2,15 +2,42 @@
 
 #include "log_reader.hpp"
 
+#include <refloc/laser_scan_t.hpp>
+
 #include <memory>
 #include <string_view>
 
 namespace refloc {
+namespace {
+
+void add_to_continuity(ScanContinuity& continuity, const LogEventView& e,
+                       const std::optional<DecodedMessage>& heartbeat, const MessageDecoder& decoder,
+                       laser_scan_t& scan) {
+  continuity.add_event(e.log_utime);
+  if (*e.channel == continuity.scan_channel()) {
+    // Straight into the type (not JSON): a scan has hundreds of ranges.
+    if (scan.decode(e.data, 0, static_cast<int>(e.size)) >= 0)
+      continuity.add_scan(scan.scan_counter, scan.utime, e.log_utime);
+  } else if (const int stage = continuity.stage_of(*e.channel); stage >= 0) {
+    if (const auto scan_utime = decoder.utime(e.data, e.size)) continuity.add_stage(static_cast<size_t>(stage), *scan_utime);
+  } else if (heartbeat) {
+    const auto& f = heartbeat->fields;
+    continuity.add_heartbeat(f.at("service").get<std::string>(), f.at("pid").get<int32_t>(), f.at("messages_in").get<int64_t>(),
+                             f.at("messages_out").get<int64_t>(), f.at("decode_errors").get<int64_t>(),
+                             f.at("processing_p50_us").get<double>(), f.at("processing_p99_us").get<double>(),
+                             f.at("counter_names").get<std::vector<std::string>>(),
+                             f.at("counter_values").get<std::vector<int64_t>>());
+  }
+}
+
+}  // namespace
 
 LogAnalysis analyze_log(const std::string& path, const LogAnalysisOptions& options,
                         const MessageDecoder& decoder) {
   LogStatistics statistics(options.gap_threshold_s, options.max_gaps);
   PipelineLatency latency(options.pipeline_channels);
+  ScanContinuity continuity(options.scan_channel, options.scan_stages, options.scan_tail_grace_s);
+  laser_scan_t scan;
   for_each_log_event(path, [&](const LogEventView& e) {
     const char* type = decoder.type_name(e.data, e.size);
     statistics.add(*e.channel, e.log_utime, e.size, e.eventnum, type);
@@ -21,6 +48,7 @@ LogAnalysis analyze_log(const std::string& path, const LogAnalysisOptions& optio
       statistics.add_heartbeat(*e.channel, heartbeat->fields["service"].get<std::string>(), e.log_utime,
                                e.eventnum);
     }
+    if (options.scans) add_to_continuity(continuity, e, heartbeat, decoder, scan);
     if (!options.latency) return;
     if (const int stage = latency.stage_of(*e.channel); stage >= 0) {
       if (const auto scan_utime = decoder.utime(e.data, e.size)) {
@@ -28,13 +56,14 @@ LogAnalysis analyze_log(const std::string& path, const LogAnalysisOptions& optio
       }
     } else if (heartbeat && *e.channel == options.heartbeat_channel) {
       const auto& f = heartbeat->fields;
-      latency.add_processing({f["service"].get<std::string>(), f["processing_p50_us"].get<double>(),
-                              f["processing_p99_us"].get<double>(), f["messages_in"].get<int64_t>(),
-                              f["messages_out"].get<int64_t>()});
+      latency.add_processing({f.at("service").get<std::string>(), f.at("processing_p50_us").get<double>(),
+                              f.at("processing_p99_us").get<double>(), f.at("messages_in").get<int64_t>(),
+                              f.at("messages_out").get<int64_t>()});
     }
   });
-  LogAnalysis analysis{statistics.summary(), std::nullopt};
+  LogAnalysis analysis{statistics.summary(), std::nullopt, std::nullopt};
   if (options.latency) analysis.latency = latency.report();
+  if (options.scans) analysis.scans = continuity.report();
   return analysis;
 }
 

@@ -6,6 +6,7 @@
 #include "log_statistics.hpp"
 #include "message_json.hpp"
 #include "pipeline_latency.hpp"
+#include "scan_continuity.hpp"
 
 #include <optional>
 #include <string>
@@ -19,11 +20,16 @@ struct LogAnalysisOptions {
   bool latency = false;          ///< also measure the scan-to-pose pipeline
   std::vector<std::string> pipeline_channels = default_pipeline_channels();
   std::string heartbeat_channel = "HEARTBEAT";
+  bool scans = false;  ///< also check scan continuity (dropped scans) and service health
+  std::string scan_channel = "LMS100_SCAN";
+  std::vector<std::string> scan_stages = {"REFLECTORS", "REFLECTOR_MATCHES", "LASER_POSE"};
+  double scan_tail_grace_s = 0.5;  ///< see StageCoverage::scans_missing
 };
 
 struct LogAnalysis {
   LogSummary summary;
   std::optional<LatencyReport> latency;
+  std::optional<ScanContinuityReport> scans;
 };
 
 /// Read the whole log once. Throws ConfigError when it cannot be opened.

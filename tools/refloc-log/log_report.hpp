@@ -4,6 +4,7 @@
 
 #include "log_statistics.hpp"
 #include "pipeline_latency.hpp"
+#include "scan_continuity.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -18,5 +19,10 @@ nlohmann::ordered_json log_summary_to_json(const LogSummary& summary);
 /// Per-stage and end-to-end p50/p99/max, scans reaching each stage, HEARTBEAT processing.
 std::string format_latency_report(const LatencyReport& report);
 nlohmann::ordered_json latency_report_to_json(const LatencyReport& report);
+
+/// Scans and counter gaps, scans reaching each stage, dropped scans, and the
+/// service table from HEARTBEAT (messages, decode errors, worst handler p99, restarts).
+std::string format_scan_continuity(const ScanContinuityReport& report);
+nlohmann::ordered_json scan_continuity_to_json(const ScanContinuityReport& report);
 
 }  // namespace refloc

@@ -34,6 +34,9 @@ int main(int argc, char** argv) {
   app.add_option("--pipeline", options.pipeline_channels, "pipeline channels for --latency, comma separated")
       ->delimiter(',')
       ->capture_default_str();
+  app.add_flag("--scans", options.scans,
+               "dropped scans: LMS100_SCAN counter gaps, scans reaching REFLECTORS/REFLECTOR_MATCHES/LASER_POSE, "
+               "and every service's HEARTBEAT health (decode errors, worst handler p99, restarts)");
   app.add_flag("--json", json, "print the summary (and latency) as one JSON document");
   CLI11_PARSE(app, argc, argv);
 
@@ -44,10 +47,12 @@ int main(int argc, char** argv) {
     if (json) {
       nlohmann::ordered_json doc = refloc::log_summary_to_json(analysis.summary);
       if (analysis.latency) doc["latency"] = refloc::latency_report_to_json(*analysis.latency);
+      if (analysis.scans) doc["scans"] = refloc::scan_continuity_to_json(*analysis.scans);
       std::printf("%s\n", doc.dump(2).c_str());
     } else {
       std::printf("%s", refloc::format_log_summary(analysis.summary).c_str());
       if (analysis.latency) std::printf("%s", refloc::format_latency_report(*analysis.latency).c_str());
+      if (analysis.scans) std::printf("%s", refloc::format_scan_continuity(*analysis.scans).c_str());
     }
     if (!request.jsonl_path.empty()) {
       std::fprintf(stderr, "%s: %lld lines (%lld not decodable) from %zu channels\n",
