@@ -38,7 +38,9 @@ struct Measurement {
   Pose2 estimate;
   int reflectors_used = 0;
   bool has_crlb = false;
-  double crlb_var_xy = 0.0;  ///< trace of the position block of the bound [m^2]
+  double crlb_var_xy = 0.0;  ///< trace of the position block of the bound, LMS100 spot [m^2]
+  bool has_point_beam_crlb = false;
+  double point_beam_crlb_var_xy = 0.0;  ///< the same for ideal point beams [m^2]
   int visible_reflectors = 0;
   int detected_visible = 0;
   int detections = 0;
@@ -58,6 +60,8 @@ struct ModeSummary {
   double heading_rmse_deg = 0.0;
   double crlb_rmse_mm = 0.0;       ///< sqrt(mean(trace of the bound's position block))
   double crlb_ratio = 0.0;         ///< rmse / crlb_rmse
+  double point_beam_crlb_rmse_mm = 0.0;  ///< the bound if the beams were ideal points
+  double point_beam_crlb_ratio = 0.0;    ///< rmse / point_beam_crlb_rmse
   double recall = 0.0;             ///< visible reflectors detected / visible reflectors
   double false_detection_rate = 0.0;  ///< detections not on a real reflector / detections
 };

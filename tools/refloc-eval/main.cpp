@@ -47,9 +47,11 @@ void print_progress(size_t done, size_t total) {
 
 void print_summary(const char* name, const ModeSummary& s) {
   fmt::print("{:<8} published {:>5}/{:<5} wrong {:>3}  mean max err x {:6.2f} mm  y {:6.2f} mm  RMSE {:6.2f} mm  "
-             "CRLB {:6.2f} mm  RMSE/CRLB {:5.2f}  heading RMSE {:.3f} deg  recall {:.4f}  false det. {:.4f}\n",
+             "CRLB {:6.2f} mm  RMSE/CRLB {:5.2f} (point beams {:5.2f} mm, {:5.2f})  heading RMSE {:.3f} deg  "
+             "recall {:.4f}  false det. {:.4f}\n",
              name, s.published_ok, s.measurements, s.wrong_matches, s.mean_max_err_x_mm, s.mean_max_err_y_mm,
-             s.rmse_mm, s.crlb_rmse_mm, s.crlb_ratio, s.heading_rmse_deg, s.recall, s.false_detection_rate);
+             s.rmse_mm, s.crlb_rmse_mm, s.crlb_ratio, s.point_beam_crlb_rmse_mm, s.point_beam_crlb_ratio,
+             s.heading_rmse_deg, s.recall, s.false_detection_rate);
 }
 
 void print_paper_table(const StudyResult& r, const std::vector<Pose2>& poses, int repeats) {
