@@ -57,12 +57,18 @@ void print_summary(const char* name, const ModeSummary& s) {
 void print_paper_table(const StudyResult& r, const std::vector<Pose2>& poses, int repeats) {
   fmt::print("Table 1 protocol: robot static at 10 positions, {} measurements each (mm)\n", repeats);
   for (PipelineMode mode : {PipelineMode::kPaper, PipelineMode::kDefault}) {
-    fmt::print("\nmode {}\n{:>3}  {:<48} {:<14} {}\n", to_string(mode), "No", "measured", "actual", "(dx_max, dy_max)");
+    fmt::print("\nmode {}\n{:>3}  {:<48} {:<14} {:<18} {:>6} {:>6}\n", to_string(mode), "No", "measured", "actual",
+               "(dx_max, dy_max)", "RMSE", "CRLB");
     for (size_t p = 0; p < poses.size(); ++p) {
       std::string measured;
-      double dx = 0.0, dy = 0.0;
+      double dx = 0.0, dy = 0.0, sum_e2 = 0.0, sum_crlb = 0.0;
+      int n_e = 0, n_crlb = 0;
       for (const auto& m : r.measurements) {
         if (m.mode != mode || m.pose_index != static_cast<int>(p)) continue;
+        if (m.has_crlb) {
+          sum_crlb += m.crlb_var_xy;
+          ++n_crlb;
+        }
         if (!m.published_ok) {
           measured += "(  no pose  ) ";
           continue;
@@ -70,10 +76,16 @@ void print_paper_table(const StudyResult& r, const std::vector<Pose2>& poses, in
         measured += fmt::format("({:.1f}, {:.1f}) ", 1000 * m.estimate.x, 1000 * m.estimate.y);
         dx = std::max(dx, std::abs(m.estimate.x - m.truth.x));
         dy = std::max(dy, std::abs(m.estimate.y - m.truth.y));
+        sum_e2 += (m.estimate.translation() - m.truth.translation()).squaredNorm();
+        ++n_e;
       }
-      fmt::print("{:>3}  {:<48} ({:.0f}, {:.0f})   ({:.1f}, {:.1f})\n", p + 1, measured, 1000 * poses[p].x,
-                 1000 * poses[p].y, 1000 * dx, 1000 * dy);
+      const std::string rmse = n_e > 0 ? fmt::format("{:.2f}", 1000 * std::sqrt(sum_e2 / n_e)) : "-";
+      const std::string crlb = n_crlb > 0 ? fmt::format("{:.2f}", 1000 * std::sqrt(sum_crlb / n_crlb)) : "-";
+      fmt::print("{:>3}  {:<48} {:<14} {:<18} {:>6} {:>6}\n", p + 1, measured,
+                 fmt::format("({:.0f}, {:.0f})", 1000 * poses[p].x, 1000 * poses[p].y),
+                 fmt::format("({:.1f}, {:.1f})", 1000 * dx, 1000 * dy), rmse, crlb);
     }
+    fmt::print("RMSE and CRLB: position error over the measurements (mm); CRLB of the LMS100 beam spot\n");
   }
   fmt::print("\npaper (LabVIEW, real LMS100): mean max err x 14.30 mm  y 14.70 mm\n");
 }
