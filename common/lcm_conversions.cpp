@@ -83,4 +83,16 @@ ReflectorDetection from_lcm(const reflector_t& r) {
   return d;
 }
 
+void covariance_to_lcm(const Eigen::Matrix3d& covariance, double (&out)[9]) {
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out[3 * r + c] = covariance(r, c);
+}
+
+Eigen::Matrix3d covariance_from_lcm(const double (&in)[9]) {
+  Eigen::Matrix3d covariance;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) covariance(r, c) = in[3 * r + c];
+  return covariance;
+}
+
 }  // namespace refloc

@@ -6,6 +6,7 @@
 #include "common/reflector_detection.hpp"
 #include "common/se2.hpp"
 
+#include <Eigen/Core>
 #include <refloc/laser_scan_t.hpp>
 #include <refloc/reflector_t.hpp>
 
@@ -18,5 +19,9 @@ bool from_lcm(const laser_scan_t& msg, LaserScan& out);
 
 reflector_t to_lcm(const ReflectorDetection& detection);
 ReflectorDetection from_lcm(const reflector_t& msg);
+
+/// The row-major 3x3 (x, y, theta) covariance of pose2d_t and odometry_t.
+void covariance_to_lcm(const Eigen::Matrix3d& covariance, double (&out)[9]);
+Eigen::Matrix3d covariance_from_lcm(const double (&in)[9]);
 
 }  // namespace refloc

@@ -58,7 +58,9 @@ std::string resolve_lcm_url(const std::string& explicit_url) {
 }
 
 void setup_logging(const std::string& service_name, bool verbose) {
-  auto logger = spdlog::stderr_color_mt(service_name);
+  // A second call (tests, a tool hosting two services) reuses the logger instead of throwing.
+  auto logger = spdlog::get(service_name);
+  if (!logger) logger = spdlog::stderr_color_mt(service_name);
   logger->set_pattern("%Y-%m-%d %H:%M:%S.%e [%n] %^%l%$: %v");
   logger->set_level(verbose ? spdlog::level::debug : spdlog::level::info);
   spdlog::set_default_logger(logger);

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "common/clock.hpp"
-#include "common/guarded_main.hpp"
+#include "common/service_command_line.hpp"
 #include "common/json_config.hpp"
 #include "common/lcm_conversions.hpp"
 #include "common/service_runtime.hpp"
@@ -29,7 +29,6 @@ struct Options {
   uint16_t port = 2111;
   std::string config_path;
   std::string lcm_url;
-  bool verbose = false;
 };
 
 /// The session's latest state line, handed from the session thread to the heartbeat.
@@ -133,18 +132,15 @@ int run(const Options& options) {
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  CLI::App app{"SICK LMS100 driver: CoLa-A over TCP -> LMS100_SCAN"};
+  // No default config file: the built-in defaults are the sensor's factory settings.
+  refloc::ServiceCommandLine cli("lms100_driver", "SICK LMS100 driver: CoLa-A over TCP -> LMS100_SCAN", "");
   refloc::Options o;
-  app.add_option("--host", o.host, "sensor address (our simulator scripts pass 127.0.0.1)")
+  cli.app.add_option("--host", o.host, "sensor address (our simulator scripts pass 127.0.0.1)")
       ->capture_default_str();
-  app.add_option("--port", o.port, "sensor CoLa-A port")->capture_default_str();
-  app.add_option("--config", o.config_path,
-                 "service config file (JSON), e.g. deploy/config/lms100_driver.json");
-  app.add_option("--lcm-url", o.lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
-  app.add_flag("-v,--verbose", o.verbose, "debug log lines");
-  CLI11_PARSE(app, argc, argv);
-  return refloc::guarded_main("lms100_driver", [&] {
-    refloc::setup_logging("lms100_driver", o.verbose);
+  cli.app.add_option("--port", o.port, "sensor CoLa-A port")->capture_default_str();
+  return cli.run(argc, argv, [&] {
+    o.config_path = cli.config_path;
+    o.lcm_url = cli.lcm_url;
     return refloc::run(o);
   });
 }

@@ -4,13 +4,12 @@
 #include "pose_solver/pose_solver.hpp"
 #include "pose_solver/solver_config_file.hpp"
 
-#include "common/guarded_main.hpp"
+#include "common/service_command_line.hpp"
 #include "common/lcm_conversions.hpp"
 #include "common/json_config.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_runtime.hpp"
 
-#include <CLI/CLI.hpp>
 #include <refloc/pose2d_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
 
@@ -68,8 +67,8 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     out.x = has_pose ? solution.map_T_robot.x : 0.0;
     out.y = has_pose ? solution.map_T_robot.y : 0.0;
     out.theta = has_pose ? solution.map_T_robot.theta : 0.0;
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) out.covariance[3 * r + c] = has_pose ? solution.covariance(r, c) : (r == c ? 1e6 : 0.0);
+    // No fix: a covariance no consumer mistakes for information.
+    covariance_to_lcm(has_pose ? solution.covariance : Eigen::Matrix3d(Eigen::Matrix3d::Identity() * 1e6), out.covariance);
     out.reflectors_used = has_pose ? solution.reflectors_used : 0;
     out.residual = has_pose ? solution.rms_residual : 0.0;
     if (out.status == pose2d_t::STATUS_OK) {
@@ -92,16 +91,8 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  CLI::App app{"Pose solver: REFLECTOR_MATCHES -> LASER_POSE (map_T_robot with covariance)"};
-  std::string lcm_url, config_path = "deploy/config/pose_solver.json", robot_path = "deploy/config/robot.json";
-  bool verbose = false;
-  app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
-  app.add_option("--config", config_path, "service config file (JSON); empty for defaults")->capture_default_str();
-  app.add_option("--robot", robot_path, "robot geometry file with /laser_mount (JSON)")->capture_default_str();
-  app.add_flag("-v,--verbose", verbose, "debug log lines");
-  CLI11_PARSE(app, argc, argv);
-  return refloc::guarded_main("pose_solver", [&] {
-    refloc::setup_logging("pose_solver", verbose);
-    return refloc::run(lcm_url, config_path, robot_path);
-  });
+  refloc::ServiceCommandLine cli("pose_solver", "Pose solver: REFLECTOR_MATCHES -> LASER_POSE (map_T_robot with covariance)",
+                                 "deploy/config/pose_solver.json");
+  cli.add_robot_option("robot geometry file with /laser_mount (JSON)");
+  return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path, cli.robot_path); });
 }

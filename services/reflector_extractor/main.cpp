@@ -2,7 +2,7 @@
 // one output per scan, each detection motion-compensated to the scan's first beam with
 // the latest ODOMETRY twist.
 
-#include "common/guarded_main.hpp"
+#include "common/service_command_line.hpp"
 #include "common/json_config.hpp"
 #include "common/lcm_conversions.hpp"
 #include "common/robot_config.hpp"
@@ -11,7 +11,6 @@
 #include "reflector_extractor/extractor_config_file.hpp"
 #include "reflector_extractor/motion_compensation.hpp"
 
-#include <CLI/CLI.hpp>
 #include <refloc/heartbeat_t.hpp>
 #include <refloc/laser_scan_t.hpp>
 #include <refloc/odometry_t.hpp>
@@ -92,18 +91,9 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  CLI::App app{"reflector_extractor: laser scans in, retro-reflector detections out (LCM service)"};
-  std::string lcm_url;
-  std::string config_path = "deploy/config/reflector_extractor.json";
-  std::string robot_path = "deploy/config/robot.json";
-  bool verbose = false;
-  app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm with ttl=0)");
-  app.add_option("--config", config_path, "service config file (JSON); empty for defaults")->capture_default_str();
-  app.add_option("--robot", robot_path, "robot config with the laser mount (robot_T_laser)")->capture_default_str();
-  app.add_flag("-v,--verbose", verbose, "debug log lines");
-  CLI11_PARSE(app, argc, argv);
-  return refloc::guarded_main("reflector_extractor", [&] {
-    refloc::setup_logging("reflector_extractor", verbose);
-    return refloc::run(lcm_url, config_path, robot_path);
-  });
+  refloc::ServiceCommandLine cli("reflector_extractor",
+                                 "reflector_extractor: laser scans in, retro-reflector detections out (LCM service)",
+                                 "deploy/config/reflector_extractor.json");
+  cli.add_robot_option("robot config with the laser mount (robot_T_laser)");
+  return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path, cli.robot_path); });
 }

@@ -1,0 +1,34 @@
+#pragma once
+// The command line every refloc service shares, and how its main() runs:
+// --help, --lcm-url, --config FILE, -v; usage errors reported as CLI11 does;
+// then the body under guarded_main (bad config: one line, exit 2).
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+namespace refloc {
+
+class ServiceCommandLine {
+ public:
+  /// default_config: the service's file under deploy/config ("" = built-in defaults).
+  ServiceCommandLine(std::string service_name, const std::string& description, std::string default_config);
+
+  /// Adds --robot FILE (default deploy/config/robot.json) for services that need the robot geometry.
+  void add_robot_option(const std::string& help);
+
+  /// Parses argv, sets up logging and runs body under guarded_main; returns the exit code.
+  int run(int argc, char** argv, const std::function<int()>& body);
+
+  CLI::App app;  ///< for service-specific options
+  std::string lcm_url;  ///< empty: $LCM_DEFAULT_URL, else udpm with ttl=0
+  std::string config_path;
+  std::string robot_path = "deploy/config/robot.json";
+  bool verbose = false;
+
+ private:
+  std::string service_name_;
+};
+
+}  // namespace refloc
