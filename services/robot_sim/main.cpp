@@ -37,6 +37,7 @@ struct Options {
   std::string world_path;  ///< overrides the config's world_file
   bool no_laser = false;
   int port = -1;
+  std::string sensor_bind_address;  ///< overrides /emulator/bind_address
   bool verbose = false;
 };
 
@@ -71,6 +72,7 @@ SimSetup load_setup(const Options& o) {
   if (!o.world_path.empty()) s.world_path = o.world_path;
   if (o.no_laser) s.world_path.clear();
   if (o.port >= 0) s.emulator.port = static_cast<uint16_t>(o.port);
+  if (!o.sensor_bind_address.empty()) s.emulator.bind_address = o.sensor_bind_address;
   return s;
 }
 
@@ -163,6 +165,9 @@ int main(int argc, char** argv) {
   app.add_option("--config", o.config_path, "simulation config (JSON, deploy/config/robot_sim.json)");
   app.add_option("--world", o.world_path, "world file for the emulated LMS100 (overrides world_file)");
   app.add_option("--port", o.port, "LMS100 TCP port (0 = any free port)")->check(CLI::Range(0, 65535));
+  app.add_option("--sensor-bind-address", o.sensor_bind_address,
+                 "address the LMS100 emulator listens on (default 127.0.0.1; the computer's LAN address "
+                 "when lms100_driver runs on another computer)");
   app.add_flag("--no-laser", o.no_laser, "run without the emulated LMS100");
   app.add_flag("-v,--verbose", o.verbose, "debug log lines");
   CLI11_PARSE(app, argc, argv);
