@@ -17,12 +17,13 @@ namespace {
 
 using testing::kT0;
 
-heartbeat_t beat(const std::string& service, int32_t pid, int64_t decode_errors, float p99_us) {
+heartbeat_t beat(const std::string& service, int32_t pid, int64_t decode_errors, float p99_us, int64_t in = 100,
+                 int64_t out = 99) {
   heartbeat_t hb{};
   hb.service = service;
   hb.pid = pid;
-  hb.messages_in = 100;
-  hb.messages_out = 99;
+  hb.messages_in = in;
+  hb.messages_out = out;
   hb.decode_errors = decode_errors;
   hb.processing_p50_us = 100.0f;
   hb.processing_p99_us = p99_us;
@@ -56,9 +57,9 @@ std::string write_scan_log() {
     pose.utime = scan_utime;
     log.write("LASER_POSE", scan_utime + 4'000, pose);
   }
-  log.write("HEARTBEAT", kT0 + 1'000'000, beat("pose_solver", 11, 2, 800.0f));
-  log.write("HEARTBEAT", kT0 + 2'000'000, beat("pose_solver", 11, 3, 2500.0f));
-  log.write("HEARTBEAT", kT0 + 3'000'000, beat("pose_solver", 12, 1, 900.0f));  // restarted
+  log.write("HEARTBEAT", kT0 + 1'000'000, beat("pose_solver", 11, 2, 800.0f, 1000, 900));
+  log.write("HEARTBEAT", kT0 + 2'000'000, beat("pose_solver", 11, 3, 2500.0f, 1050, 940));
+  log.write("HEARTBEAT", kT0 + 3'000'000, beat("pose_solver", 12, 1, 900.0f, 20, 10));  // restarted
   log.write("HEARTBEAT", kT0 + 3'000'000, beat("reflector_extractor", 20, 0, 300.0f));
   return path;
 }
@@ -135,6 +136,9 @@ TEST(LoadScanContinuity, HeartbeatHealthKeepsTheWorstP99AndDecodeErrorsOverARest
   EXPECT_DOUBLE_EQ(solver.last_p99_us, 900.0);
   EXPECT_DOUBLE_EQ(solver.max_p99_us, 2500.0);
   EXPECT_EQ(solver.counters.at("lost_scans"), 7);
+  EXPECT_EQ(solver.messages_in, 20);
+  EXPECT_EQ(solver.messages_in_logged, 50 + 20);
+  EXPECT_EQ(solver.messages_out_logged, 40 + 10);
   EXPECT_EQ(r.services[1].service, "reflector_extractor");
   EXPECT_EQ(r.services[1].restarts, 0);
 }

@@ -159,11 +159,12 @@ std::string format_scan_continuity(const ScanContinuityReport& r) {
   out += fmt::format("  dropped scans: {}\n", r.dropped());
   if (!r.services.empty()) {
     out += "service health from HEARTBEAT\n";
-    out += fmt::format("  {:<22} {:>6} {:>10} {:>10} {:>8} {:>9} {:>9} {:>8}\n", "SERVICE", "BEATS", "IN", "OUT",
-                       "DECERR", "P99[us]", "MAXP99", "RESTART");
+    out += fmt::format("  {:<22} {:>6} {:>10} {:>10} {:>8} {:>9} {:>9} {:>8}\n", "SERVICE", "BEATS", "IN(LOG)",
+                       "OUT(LOG)", "DECERR", "P99[us]", "MAXP99", "RESTART");
     for (const auto& h : r.services) {
       out += fmt::format("  {:<22} {:>6} {:>10} {:>10} {:>8} {:>9.0f} {:>9.0f} {:>8}\n", h.service, h.heartbeats,
-                         h.messages_in, h.messages_out, h.decode_errors, h.last_p99_us, h.max_p99_us, h.restarts);
+                         h.messages_in_logged, h.messages_out_logged, h.decode_errors, h.last_p99_us, h.max_p99_us,
+                         h.restarts);
     }
   }
   return out;
@@ -186,6 +187,8 @@ nlohmann::ordered_json scan_continuity_to_json(const ScanContinuityReport& r) {
                         {"restarts", h.restarts},
                         {"messages_in", h.messages_in},
                         {"messages_out", h.messages_out},
+                        {"messages_in_logged", h.messages_in_logged},
+                        {"messages_out_logged", h.messages_out_logged},
                         {"decode_errors", h.decode_errors},
                         {"processing_p50_us", h.last_p50_us},
                         {"processing_p99_us", h.last_p99_us},

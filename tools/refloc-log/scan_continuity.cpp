@@ -68,14 +68,23 @@ void ScanContinuity::add_heartbeat(const std::string& service, int32_t pid, int6
   ServiceHealth& h = a.health;
   if (inserted) {
     h.service = service;
+    a.in_base = messages_in;
+    a.out_base = messages_out;
   } else if (pid != a.pid) {
     ++h.restarts;
     a.decode_errors_before_restart = h.decode_errors;
+    // The new process counts from zero.
+    a.in_banked = h.messages_in_logged;
+    a.out_banked = h.messages_out_logged;
+    a.in_base = 0;
+    a.out_base = 0;
   }
   a.pid = pid;
   ++h.heartbeats;
   h.messages_in = messages_in;
   h.messages_out = messages_out;
+  h.messages_in_logged = a.in_banked + messages_in - a.in_base;
+  h.messages_out_logged = a.out_banked + messages_out - a.out_base;
   h.decode_errors = a.decode_errors_before_restart + decode_errors;
   h.last_p50_us = p50_us;
   h.last_p99_us = p99_us;

@@ -38,6 +38,10 @@ struct ServiceHealth {
   int64_t restarts = 0;  ///< pid changes
   int64_t messages_in = 0;   ///< last heartbeat (since the process started)
   int64_t messages_out = 0;
+  /// Between its first and last heartbeat in the log (summed over restarts): set
+  /// against the logged message counts, tells a service's drop from the logger's.
+  int64_t messages_in_logged = 0;
+  int64_t messages_out_logged = 0;
   int64_t decode_errors = 0;  ///< summed over restarts
   double last_p50_us = 0.0;
   double last_p99_us = 0.0;
@@ -94,6 +98,10 @@ class ScanContinuity {
     ServiceHealth health;
     int32_t pid = 0;
     int64_t decode_errors_before_restart = 0;
+    int64_t in_base = 0;   ///< messages_in at the first heartbeat of this process
+    int64_t out_base = 0;
+    int64_t in_banked = 0;  ///< counted by earlier processes of the service
+    int64_t out_banked = 0;
   };
 
   std::string scan_channel_;

@@ -1,0 +1,267 @@
+#!/usr/bin/env bash
+# Load test of the whole refloc stack: robot_sim (LMS100 emulator at 50 Hz) and
+# every service under supervisord, as deploy/run_mission.sh starts them, in a
+# private network namespace, with the robot driving the demo mission over and
+# over. Measures for --duration seconds:
+#   - scans: LMS100_SCAN published vs expected (50 Hz x duration), dropped scans
+#     (scan-counter gaps + scans that never became a LASER_POSE), REFLECTORS and
+#     LASER_POSE counts (refloc-log --scans);
+#   - scan-to-LASER_POSE latency p50/p99/max from the LCM log (refloc-log --latency);
+#   - per service: CPU% (utime+stime over the run from /proc/<pid>/stat; 100% =
+#     one core), RSS mean/end and peak (VmRSS, VmHWM), HEARTBEAT handler p99
+#     (worst window), decode errors, restarts.
+# Exit status: 0 pass; 1 a scan was dropped, p99 > --max-p99-ms, a service is
+# missing from the report or restarted; 2 the stack did not come up; 64 usage.
+#
+#   deploy/load_test.sh [--duration S] [--build-dir DIR] [--json FILE] [--run-dir DIR]
+#                       [--max-p99-ms MS] [--warmup-timeout S] [--mission FILE]
+#
+#   --duration S        measured time [600]
+#   --build-dir DIR     build with bin/ (relative to the repo root) [build]
+#   --json FILE         write the whole report as JSON
+#   --run-dir DIR       LCM log, supervisor and program logs [logs/load-<date>]
+#   --max-p99-ms MS     scan-to-pose p99 limit; 0 = report only (sanitizer builds) [5]
+#   --warmup-timeout S  wait this long for the first LASER_POSE [60]
+#   --mission FILE      mission repeated to keep the robot driving [deploy/config/mission_demo.json]
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+
+duration=600
+build_dir=build
+json=""
+run_dir=""
+max_p99_ms=5
+warmup_timeout=60
+mission=deploy/config/mission_demo.json
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --duration) duration="$2"; shift 2 ;;
+    --build-dir) build_dir="$2"; shift 2 ;;
+    --json) json="$2"; shift 2 ;;
+    --run-dir) run_dir="$2"; shift 2 ;;
+    --max-p99-ms) max_p99_ms="$2"; shift 2 ;;
+    --warmup-timeout) warmup_timeout="$2"; shift 2 ;;
+    --mission) mission="$2"; shift 2 ;;
+    -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "load_test: unknown argument '$1' (see --help)" >&2; exit 64 ;;
+  esac
+done
+[[ "$duration" =~ ^[0-9]+$ && "$duration" -ge 1 ]] || { echo "load_test: --duration must be whole seconds >= 1" >&2; exit 64; }
+[ -z "$json" ] || json="$(realpath -m "$json")"
+
+# LCM traffic of the test must not meet anything else: private network namespace.
+if [ "${REFLOC_IN_NETNS:-}" != "1" ]; then
+  args=(--duration "$duration" --build-dir "$build_dir" --max-p99-ms "$max_p99_ms"
+        --warmup-timeout "$warmup_timeout" --mission "$mission")
+  [ -n "$json" ] && args+=(--json "$json")
+  [ -n "$run_dir" ] && args+=(--run-dir "$run_dir")
+  exec "$root/tests/tools/run_in_netns.sh" "$0" "${args[@]}"
+fi
+
+for tool in jq supervisord lcm-logger; do
+  command -v "$tool" >/dev/null || { echo "load_test: $tool not installed (deploy/install-deps.sh)" >&2; exit 2; }
+done
+export REFLOC_BUILD="$(realpath -m "$build_dir")"
+for bin in refloc-log refloc-mission refloc-status robot_sim; do
+  [ -x "$REFLOC_BUILD/bin/$bin" ] || { echo "load_test: $REFLOC_BUILD/bin/$bin not built" >&2; exit 2; }
+done
+run_dir="$(realpath -m "${run_dir:-$root/logs/load-$(date +%Y%m%d-%H%M%S)}")"
+mkdir -p "$run_dir"
+export REFLOC_LOG_DIR="$run_dir"
+export REFLOC_RUN_DIR="$run_dir/supervisor"
+export REFLOC_LOG_SPLIT_MB=100000  # one log file however long the run
+export LCM_DEFAULT_URL="${LCM_DEFAULT_URL:-udpm://239.255.76.67:7667?ttl=0}"
+export REFLOC_ARGS_lms100_driver="${REFLOC_ARGS_lms100_driver:---host 127.0.0.1}"
+
+services=(robot_sim lms100_driver reflector_extractor reflector_matcher pose_solver mecanum_odometry pose_fusion navigator)
+programs=("${services[@]}" lcm-logger)
+mission_loop_pid=""
+
+cleanup() {
+  if [ -n "$mission_loop_pid" ]; then
+    kill -- "$mission_loop_pid" 2>/dev/null || true
+    wait "$mission_loop_pid" 2>/dev/null || true
+  fi
+  deploy/refloc stop >/dev/null 2>&1 || true
+}
+trap cleanup EXIT
+
+load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
+echo "== load test: ${duration} s, build $REFLOC_BUILD, $(nproc) cores, load average $load_before"
+echo "== run dir $run_dir"
+deploy/refloc start "${services[@]}" >/dev/null
+
+# Warm: every service beats and the solver has published poses.
+echo "== waiting for the first LASER_POSE (at most ${warmup_timeout} s)"
+warm=false
+deadline=$((SECONDS + warmup_timeout))
+while [ $SECONDS -lt $deadline ]; do
+  status="$("$REFLOC_BUILD/bin/refloc-status" --once --wait 1.5 --json 2>/dev/null || true)"
+  if jq -e --argjson n "${#services[@]}" \
+      '[.services[] | select(.present)] | length >= $n and (map(select(.service == "pose_solver" and .messages_out > 0)) | length == 1)' \
+      >/dev/null 2>&1 <<<"$status"; then
+    warm=true
+    break
+  fi
+done
+if [ "$warm" != true ]; then
+  echo "load_test: the stack did not produce LASER_POSE within ${warmup_timeout} s" >&2
+  deploy/refloc status >&2 || true
+  exit 2
+fi
+
+# Keep the robot driving: the demo mission ends where it starts, so repeat it.
+(
+  child=""
+  trap 'kill -- "$child" 2>/dev/null; exit 0' TERM
+  i=0
+  while true; do
+    "$REFLOC_BUILD/bin/refloc-mission" --mission "$mission" --json "$run_dir/mission.$i.json" \
+      >>"$run_dir/mission.log" 2>&1 &
+    child=$!
+    wait "$child" || true
+    i=$((i + 1))
+    sleep 0.2
+  done
+) &
+mission_loop_pid=$!
+
+# The pid supervisord runs each program under (deploy/refloc exec replaces itself
+# with the binary). supervisorctl is asked again only when that process is gone:
+# it is a Python start-up each time, which would load the machine under test.
+declare -A pid cpu0 cpu_banked cpu_ticks rss_sum rss_end hwm samples pid_changes
+ctl() { supervisorctl -c deploy/supervisord.conf -s "unix://$REFLOC_RUN_DIR/supervisor.sock" "$@"; }
+cpu_of() {  # utime + stime [ticks] of a pid; the fields after the ')' that ends comm
+  local stat rest f
+  read -r stat <"/proc/$1/stat" 2>/dev/null || return 1
+  rest="${stat##*) }"
+  read -r -a f <<<"$rest"
+  echo $((f[11] + f[12]))
+}
+read_memory() {  # sets rss_kb and hwm_kb of a pid
+  local key value unit
+  rss_kb=""; hwm_kb=""
+  while read -r key value unit; do
+    case "$key" in VmRSS:) rss_kb=$value ;; VmHWM:) hwm_kb=$value ;; esac
+  done <"/proc/$1/status" 2>/dev/null || true
+}
+while read -r name state _ number _; do
+  [ "$state" = RUNNING ] && pid[$name]="${number%,}"
+done < <(ctl status "${services[@]}" || true)
+# The log, and with it the measurement, starts now.
+deploy/refloc start lcm-logger >/dev/null
+t0=$(date +%s.%N)
+pid[lcm-logger]="$(ctl pid lcm-logger)"
+for p in "${programs[@]}"; do
+  [ -n "${pid[$p]:-}" ] || { echo "load_test: $p is not running" >&2; exit 2; }
+  cpu0[$p]="$(cpu_of "${pid[$p]}" || echo 0)"
+  cpu_banked[$p]=0; cpu_ticks[$p]=0; rss_sum[$p]=0; rss_end[$p]=0; hwm[$p]=0; samples[$p]=0; pid_changes[$p]=0
+done
+echo "== measuring for ${duration} s (robot driving $mission in a loop)"
+
+sample() {
+  local p now ticks rss_kb hwm_kb
+  for p in "${programs[@]}"; do
+    if ! ticks="$(cpu_of "${pid[$p]}")"; then
+      now="$(ctl pid "$p" 2>/dev/null || echo 0)"
+      [ "$now" != "${pid[$p]}" ] || continue
+      # Restarted: keep what the old process used, count the new one from zero.
+      pid_changes[$p]=$((pid_changes[$p] + 1))
+      cpu_banked[$p]=${cpu_ticks[$p]}
+      pid[$p]="$now"
+      cpu0[$p]=0
+      ticks="$(cpu_of "$now")" || continue
+    fi
+    cpu_ticks[$p]=$((cpu_banked[$p] + ticks - cpu0[$p]))
+    read_memory "${pid[$p]}"
+    [ -n "$rss_kb" ] || continue
+    rss_sum[$p]=$((rss_sum[$p] + rss_kb)); rss_end[$p]=$rss_kb; samples[$p]=$((samples[$p] + 1))
+    if [ "${hwm_kb:-0}" -gt "${hwm[$p]}" ]; then hwm[$p]=$hwm_kb; fi
+  done
+}
+end=$((SECONDS + duration))
+while [ $SECONDS -lt $end ]; do
+  sample
+  left=$((end - SECONDS))
+  if [ $left -gt 0 ]; then sleep "$((left < 5 ? left : 5))"; fi
+done
+sample
+deploy/refloc stop lcm-logger >/dev/null
+t1=$(date +%s.%N)
+kill -- "$mission_loop_pid" 2>/dev/null || true
+wait "$mission_loop_pid" 2>/dev/null || true
+mission_loop_pid=""
+deploy/refloc stop >/dev/null
+trap - EXIT
+load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
+
+log="$(ls "$run_dir"/refloc.* | head -1)"
+echo "== analysing $log"
+"$REFLOC_BUILD/bin/refloc-log" "$log" --latency --scans --json >"$run_dir/refloc-log.json"
+
+# One JSON document: run, scans, latency, services.
+ticks_per_s="$(getconf CLK_TCK)"
+procs="{}"
+for p in "${programs[@]}"; do
+  procs="$(jq -c --arg p "$p" --argjson ticks "${cpu_ticks[$p]}" --argjson n "${samples[$p]}" \
+    --argjson rss_sum "${rss_sum[$p]}" --argjson rss_end "${rss_end[$p]}" --argjson hwm "${hwm[$p]}" \
+    --argjson restarts "${pid_changes[$p]}" --argjson hz "$ticks_per_s" --argjson t0 "$t0" --argjson t1 "$t1" \
+    '.[$p] = {cpu_percent: ($ticks / $hz / ($t1 - $t0) * 100), rss_mean_mb: (if $n > 0 then $rss_sum / $n / 1024 else null end),
+              rss_end_mb: ($rss_end / 1024), rss_peak_mb: ($hwm / 1024), samples: $n, pid_restarts: $restarts}' <<<"$procs")"
+done
+report="$(jq --argjson procs "$procs" --argjson duration "$duration" --argjson t0 "$t0" --argjson t1 "$t1" \
+  --arg load_before "$load_before" --arg load_after "$load_after" --argjson cores "$(nproc)" \
+  --argjson max_p99 "$max_p99_ms" --arg build "$REFLOC_BUILD" --arg log "$log" '
+  . as $l
+  | ($l.scans.services | map({key: .service, value: .}) | from_entries) as $hb
+  | {
+      run: {duration_s: $duration, measured_s: ($t1 - $t0), cores: $cores, build: $build, log: $log,
+            load_average_before: $load_before, load_average_after: $load_after},
+      scans: {published: $l.scans.scans, expected_50hz: (50 * $duration),
+              expected_50hz_over_log: (50 * $l.scans.duration_s + 1 | round), log_duration_s: $l.scans.duration_s,
+              expected_from_counter: $l.scans.expected,
+              rate_hz: $l.scans.rate_hz, missing_counters: $l.scans.missing, counter_gaps: $l.scans.gap_count,
+              duplicates: $l.scans.duplicates, out_of_order: $l.scans.out_of_order, gaps: $l.scans.gaps,
+              stages: $l.scans.stages, dropped: $l.scans.dropped},
+      latency_ms: $l.latency.end_to_end,
+      latency_stages_ms: $l.latency.stages,
+      services: [$procs | to_entries[] | .key as $name | .value + {
+        service: $name,
+        heartbeat_p99_us: ($hb[$name].processing_p99_us // null),
+        heartbeat_max_p99_us: ($hb[$name].max_processing_p99_us // null),
+        messages_in_logged: ($hb[$name].messages_in_logged // null),
+        messages_out_logged: ($hb[$name].messages_out_logged // null),
+        decode_errors: ($hb[$name].decode_errors // null),
+        heartbeat_restarts: ($hb[$name].restarts // null),
+        counters: ($hb[$name].counters // null)}]
+    }
+  | .checks = {
+      no_dropped_scan: (.scans.dropped == 0),
+      latency_p99_within_limit: ($max_p99 <= 0 or .latency_ms.p99_ms <= $max_p99),
+      every_service_reported: ([.services[] | select(.service != "lcm-logger" and .heartbeat_p99_us == null)] | length == 0),
+      no_restart: ([.services[] | select(.pid_restarts > 0 or (.heartbeat_restarts // 0) > 0)] | length == 0)
+    }
+  | .checks.max_p99_ms = $max_p99
+  | .pass = (.checks.no_dropped_scan and .checks.latency_p99_within_limit and .checks.every_service_reported and .checks.no_restart)
+  ' "$run_dir/refloc-log.json")"
+echo "$report" >"$run_dir/load_test.json"
+[ -n "$json" ] && echo "$report" >"$json"
+
+jq -r '
+  "== load test result (\(.run.measured_s | floor) s measured, \(.run.cores) cores, load average \(.run.load_average_before) before, \(.run.load_average_after) after)",
+  "scans: published \(.scans.published) in \(.scans.log_duration_s * 10 | round / 10) s of log (\(.scans.rate_hz * 100 | round / 100) Hz), expected \(.scans.expected_50hz_over_log) at 50 Hz over the log (\(.scans.expected_50hz) over the nominal \(.run.duration_s) s); counter span \(.scans.expected_from_counter), missing \(.scans.missing_counters) in \(.scans.counter_gaps) gaps, duplicates \(.scans.duplicates)",
+  (.scans.stages[] | "  \(.channel): \(.messages) messages, scans reached \(.scans_reached), without it \(.scans_missing)"),
+  "dropped scans: \(.scans.dropped)",
+  "scan-to-LASER_POSE latency [ms]: p50 \(.latency_ms.p50_ms * 1000 | round / 1000)  p99 \(.latency_ms.p99_ms * 1000 | round / 1000)  max \(.latency_ms.max_ms * 1000 | round / 1000)  (\(.latency_ms.count) scans; p99 limit \(if .checks.max_p99_ms > 0 then "\(.checks.max_p99_ms) ms" else "none" end))"
+' <<<"$report"
+jq -r '
+  (["SERVICE", "CPU%", "RSS_MB", "PEAK_MB", "HB_P99_US", "HB_MAXP99", "IN_LOGGED", "OUT_LOGGED", "DECERR", "RESTARTS"] | @tsv),
+  (.services[] | [.service, (.cpu_percent * 10 | round / 10), ((.rss_mean_mb // 0) * 10 | round / 10),
+    (.rss_peak_mb * 10 | round / 10), (.heartbeat_p99_us // "-" | if type == "number" then round else . end),
+    (.heartbeat_max_p99_us // "-" | if type == "number" then round else . end), (.messages_in_logged // "-"),
+    (.messages_out_logged // "-"), (.decode_errors // "-"), (.pid_restarts + (.heartbeat_restarts // 0))] | @tsv)
+' <<<"$report" | column -t -s $'\t'
+jq -r '"checks: \(.checks | to_entries | map("\(.key)=\(.value)") | join(" "))", (if .pass then "PASS" else "FAIL" end)' <<<"$report"
+echo "== report: $run_dir/load_test.json"
+jq -e .pass >/dev/null <<<"$report"
