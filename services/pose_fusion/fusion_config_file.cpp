@@ -14,7 +14,12 @@ FusionServiceConfig parse_fusion_service_config(const JsonConfig& config) {
   f.lost_after = config.number("/lost_after_s", f.lost_after, f.degraded_after, 600.0);
   f.max_consecutive_rejections = static_cast<int>(
       config.integer("/max_consecutive_rejections", f.max_consecutive_rejections, 1, 100000));
+  f.max_fix_lead = config.number("/max_fix_lead_s", f.max_fix_lead, 0.0, 1.0);
   c.odometry_noise = parse_odometry_noise(config, "/odometry_noise");
+  OdometryContinuityConfig& o = c.continuity;
+  o.max_gap = config.number("/odometry_max_gap_s", o.max_gap, 0.01, 60.0);
+  o.max_speed = config.number("/odometry_seam_max_speed_m_s", o.max_speed, 0.01, 10.0);
+  o.max_yaw_rate = config.number("/odometry_seam_max_yaw_rate_rad_s", o.max_yaw_rate, 0.01, 20.0);
   c.odometry_channel = config.string("/odometry_channel", c.odometry_channel);
   c.fix_channel = config.string("/fix_channel", c.fix_channel);
   c.output_channel = config.string("/output_channel", c.output_channel);

@@ -3,6 +3,7 @@
 // optional with the default of the struct it fills.
 
 #include "mecanum_odometry/odometry_covariance.hpp"
+#include "pose_fusion/odometry_continuity.hpp"
 #include "pose_fusion/pose_fusion.hpp"
 
 #include <string>
@@ -15,6 +16,8 @@ struct FusionServiceConfig {
   FusionConfig fusion;
   /// Covariance of each odometry increment, as mecanum_odometry models it.
   OdometryNoise odometry_noise;
+  /// When consecutive ODOMETRY messages are not one continuous frame.
+  OdometryContinuityConfig continuity;
   std::string odometry_channel = "ODOMETRY";
   std::string fix_channel = "LASER_POSE";
   std::string output_channel = "POSE";

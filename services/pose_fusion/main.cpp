@@ -5,6 +5,7 @@
 #include "common/json_config.hpp"
 #include "common/service_runtime.hpp"
 #include "pose_fusion/fusion_config_file.hpp"
+#include "pose_fusion/odometry_continuity.hpp"
 #include "pose_fusion/pose_fusion.hpp"
 
 #include <CLI/CLI.hpp>
@@ -58,22 +59,45 @@ int run(const std::string& lcm_url, const std::string& config_path) {
   }
   ServiceRuntime runtime("pose_fusion", lcm_url);
   PoseFusion fusion(config.fusion);
-  std::optional<odometry_t> previous;
+  OdometryContinuity continuity(config.continuity);
   int32_t reflectors_used = 0;
   FusionStatus published_status = FusionStatus::kInitializing;
 
+  const auto count_fix_result = [&](FixResult result) {
+    switch (result) {
+      case FixResult::kAccepted: ++runtime.counter("fixes_accepted"); break;
+      case FixResult::kInitialised: ++runtime.counter("initialisations"); break;
+      case FixResult::kRejectedGate:
+        ++runtime.counter("fixes_rejected_gate");
+        spdlog::debug("fix rejected, Mahalanobis^2 {:.1f}", fusion.last_mahalanobis_squared());
+        break;
+      case FixResult::kTooOld: ++runtime.counter("fixes_too_old"); break;
+      case FixResult::kWaitingForGood: ++runtime.counter("fixes_not_good_enough_to_start"); break;
+      case FixResult::kDeferred: ++runtime.counter("fixes_deferred"); break;
+    }
+  };
+
   runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
-    // A restarted odometry service starts a new odom frame: take the next step from there.
-    if (previous && (msg.utime <= previous->utime || msg.distance < previous->distance)) {
-      ++runtime.counter("odometry_restarts");
-      previous.reset();
+    const OdometryStep step = continuity.next({msg.utime, {msg.x, msg.y, msg.theta}, msg.distance});
+    switch (step.kind) {
+      case OdometryStepKind::kFirst: break;
+      case OdometryStepKind::kBackwards:
+        // A restarted odometry service on another clock: take the next step from here.
+        ++runtime.counter("odometry_restarts");
+        spdlog::warn("ODOMETRY went back in time by {:.3f} s: new odometry frame", -step.gap);
+        break;
+      case OdometryStepKind::kContinuous:
+        fusion.add_odometry(msg.utime, step.delta, increment_covariance(step.delta, config.odometry_noise));
+        break;
+      case OdometryStepKind::kSeam:
+        ++runtime.counter(step.restarted ? "odometry_restarts" : "odometry_gaps");
+        spdlog::warn("ODOMETRY {} after {:.3f} s: motion meanwhile unobserved, waiting for a fix to re-anchor",
+                     step.restarted ? "restarted" : "resumed", step.gap);
+        fusion.add_odometry_seam(msg.utime, step.delta,
+                                 increment_covariance(step.delta, config.odometry_noise) + step.unobserved_q);
+        break;
     }
-    if (previous) {
-      const Pose2 before{previous->x, previous->y, previous->theta};
-      const Pose2 delta = before.inverse() * Pose2{msg.x, msg.y, msg.theta};
-      fusion.add_odometry(msg.utime, delta, increment_covariance(delta, config.odometry_noise));
-    }
-    previous = msg;
+    for (const FixResult r : fusion.deferred_results()) count_fix_result(r);
     const FusionStatus status = fusion.status(msg.utime);
     if (status != published_status) {
       spdlog::info("status {} -> {}", to_string(published_status), to_string(status));
@@ -102,27 +126,12 @@ int run(const std::string& lcm_url, const std::string& config_path) {
       ++runtime.counter("fixes_unusable");
       return;
     }
-    switch (fusion.add_fix(*fix)) {
-      case FixResult::kAccepted:
-        ++runtime.counter("fixes_accepted");
-        reflectors_used = msg.reflectors_used;
-        break;
-      case FixResult::kInitialised:
-        ++runtime.counter("initialisations");
-        reflectors_used = msg.reflectors_used;
-        spdlog::info("initialised from the fix at utime {}: ({:.3f}, {:.3f}, {:.4f})", msg.utime, msg.x,
-                     msg.y, msg.theta);
-        break;
-      case FixResult::kRejectedGate:
-        ++runtime.counter("fixes_rejected_gate");
-        spdlog::debug("fix rejected, Mahalanobis^2 {:.1f}", fusion.last_mahalanobis_squared());
-        break;
-      case FixResult::kTooOld:
-        ++runtime.counter("fixes_too_old");
-        break;
-      case FixResult::kWaitingForGood:
-        ++runtime.counter("fixes_not_good_enough_to_start");
-        break;
+    const FixResult result = fusion.add_fix(*fix);
+    count_fix_result(result);
+    if (result == FixResult::kAccepted || result == FixResult::kInitialised) reflectors_used = msg.reflectors_used;
+    if (result == FixResult::kInitialised) {
+      spdlog::info("initialised from the fix at utime {}: ({:.3f}, {:.3f}, {:.4f})", msg.utime, msg.x, msg.y,
+                   msg.theta);
     }
   });
   return runtime.run();

@@ -34,7 +34,8 @@ bool PoseFusion::lost(int64_t now_utime) const {
 FusionStatus PoseFusion::status(int64_t now_utime) const {
   if (!initialised_) return FusionStatus::kInitializing;
   if (lost(now_utime)) return FusionStatus::kLost;
-  if (static_cast<double>(now_utime - last_accepted_fix_utime_) > config_.degraded_after * 1e6) {
+  if (static_cast<double>(now_utime - last_accepted_fix_utime_) > config_.degraded_after * 1e6 ||
+      last_accepted_fix_utime_ <= seam_utime_) {
     return FusionStatus::kDegraded;
   }
   return FusionStatus::kOk;
@@ -49,7 +50,27 @@ bool PoseFusion::add_odometry(int64_t utime, const Pose2& delta, const Eigen::Ma
   step.posterior = ekf_predict(estimate(), delta, q);
   steps_.push_back(std::move(step));
   trim_history();
+  apply_deferred_fixes();
   return true;
+}
+
+bool PoseFusion::add_odometry_seam(int64_t utime, const Pose2& delta, const Eigen::Matrix3d& q) {
+  const int64_t start = this->utime();
+  if (utime <= start) return false;
+  if (initialised_) seam_utime_ = start;
+  return add_odometry(utime, delta, q);
+}
+
+void PoseFusion::apply_deferred_fixes() {
+  deferred_results_.clear();
+  if (deferred_.empty()) return;
+  std::vector<PoseFix> due;
+  const int64_t now = utime();
+  auto it = std::stable_partition(deferred_.begin(), deferred_.end(),
+                                  [&](const PoseFix& f) { return f.utime > now; });
+  due.assign(it, deferred_.end());
+  deferred_.erase(it, deferred_.end());
+  for (const PoseFix& fix : due) deferred_results_.push_back(add_fix(fix));
 }
 
 void PoseFusion::trim_history() {
@@ -110,6 +131,7 @@ void PoseFusion::initialise(const PoseFix& fix) {
   base_ = {fix.map_T_robot, fix.covariance};
   repropagate_from(0);
   initialised_ = true;
+  seam_utime_ = -1;
   lost_by_rejections_ = false;
   consecutive_rejections_ = 0;
   last_accepted_fix_utime_ = fix.utime;
@@ -122,7 +144,12 @@ FixResult PoseFusion::add_fix(const PoseFix& fix) {
     return FixResult::kInitialised;
   }
   if (fix.utime < base_utime_) return FixResult::kTooOld;
-  // A fix newer than the latest odometry is applied to the latest estimate.
+  if (static_cast<double>(fix.utime - utime()) > config_.max_fix_lead * 1e6) {
+    if (deferred_.size() >= config_.max_deferred_fixes) deferred_.erase(deferred_.begin());
+    deferred_.push_back(fix);
+    return FixResult::kDeferred;
+  }
+  // A fix newer than the latest odometry by at most max_fix_lead is applied to the latest estimate.
   const long i = step_ending_at(std::min(fix.utime, utime()));
   last_mahalanobis_squared_ = mahalanobis_squared(posterior(i), fix.map_T_robot, fix.covariance);
   if (last_mahalanobis_squared_ > config_.gate_chi2) {

@@ -26,6 +26,11 @@ namespace refloc {
 
 struct FusionConfig {
   double history = 1.0;                 ///< how far back a fix can be applied [s]
+  /// A fix newer than the latest odometry by more than this waits for odometry
+  /// to reach its time (odometry is late or its service is restarting). Applied
+  /// to an older estimate it would be gated out while the robot moves [s].
+  double max_fix_lead = 0.0;
+  size_t max_deferred_fixes = 100;      ///< fixes kept while odometry is missing
   double gate_chi2 = 16.27;             ///< Mahalanobis^2 gate, chi-square 3 dof at 99.9 %
   double degraded_after = 1.0;          ///< no accepted fix this long: DEGRADED [s]
   double lost_after = 5.0;              ///< no accepted fix this long: LOST [s]
@@ -51,6 +56,7 @@ enum class FixResult {
   kRejectedGate,    ///< Mahalanobis distance above the gate
   kTooOld,          ///< older than the history
   kWaitingForGood,  ///< not initialised and the fix is not good enough to start from
+  kDeferred,        ///< ahead of odometry: applied when odometry reaches its time
 };
 
 class PoseFusion {
@@ -60,6 +66,10 @@ class PoseFusion {
   /// Odometry displacement delta (body frame, covariance q) from the previous
   /// odometry time to utime [us]. Returns false (ignored) when not after the last one.
   bool add_odometry(int64_t utime, const Pose2& delta, const Eigen::Matrix3d& q);
+  /// An odometry step across a seam (restarted odometry, long gap): q includes the
+  /// motion nobody observed. Status stays DEGRADED until a fix newer than the
+  /// seam's start is accepted. Returns false (ignored) when not after the last step.
+  bool add_odometry_seam(int64_t utime, const Pose2& delta, const Eigen::Matrix3d& q);
 
   /// An absolute pose fix; applied at fix.utime.
   FixResult add_fix(const PoseFix& fix);
@@ -73,6 +83,9 @@ class PoseFusion {
   bool initialised() const { return initialised_; }
   int consecutive_rejections() const { return consecutive_rejections_; }
   double last_mahalanobis_squared() const { return last_mahalanobis_squared_; }
+  size_t deferred_fixes() const { return deferred_.size(); }
+  /// Results of deferred fixes applied by the last add_odometry call.
+  const std::vector<FixResult>& deferred_results() const { return deferred_results_; }
 
  private:
   struct AppliedFix {
@@ -97,6 +110,7 @@ class PoseFusion {
   void recompute(size_t i);
   void repropagate_from(size_t first);
   void trim_history();
+  void apply_deferred_fixes();
 
   FusionConfig config_;
   bool initialised_ = false;
@@ -107,6 +121,9 @@ class PoseFusion {
   int64_t last_accepted_fix_utime_ = 0;
   int consecutive_rejections_ = 0;
   double last_mahalanobis_squared_ = 0.0;
+  int64_t seam_utime_ = -1;  ///< start of the latest odometry seam [us]
+  std::vector<PoseFix> deferred_;
+  std::vector<FixResult> deferred_results_;
 };
 
 const char* to_string(FusionStatus status);

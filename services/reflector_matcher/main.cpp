@@ -3,6 +3,7 @@
 
 #include "reflector_matcher/matcher_config_file.hpp"
 #include "reflector_matcher/reflector_matcher.hpp"
+#include "reflector_matcher/startup_relocalization.hpp"
 
 #include "common/guarded_main.hpp"
 #include "common/lcm_conversions.hpp"
@@ -72,13 +73,18 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   MatchResult result;
   reflector_matches_t out;
   const auto max_age_us = static_cast<int64_t>(config.prior_max_age * 1e6);
+  StartupRelocalization startup(config.relocalize_on_start);
 
   runtime.subscribe<pose2d_t>(config.prior_channel, [&](const pose2d_t& msg) { last_pose = msg; });
   runtime.subscribe<reflector_detections_t>(config.input_channel, [&](const reflector_detections_t& msg) {
     detections.clear();
     for (const reflector_t& r : msg.reflectors) detections.push_back(from_lcm(r));
     std::optional<PosePrior> prior;
-    if (last_pose && last_pose->status == pose2d_t::STATUS_OK &&
+    const bool was_done = startup.done();
+    const bool prior_allowed = startup.prior_allowed(msg.utime);
+    if (!prior_allowed) {
+      ++runtime.counter("startup_scans_without_prior");
+    } else if (last_pose && last_pose->status == pose2d_t::STATUS_OK &&
         std::llabs(msg.utime - last_pose->utime) <= max_age_us) {
       prior = prior_from_robot_pose(*last_pose, robot_T_laser);
     } else if (config.use_own_pose_as_prior && last_own_ok && std::llabs(msg.utime - last_own_ok->first) <= max_age_us) {
@@ -87,6 +93,12 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
       prior = PosePrior{last_own_ok->second, Eigen::Vector3d(sxy2, sxy2, st2).asDiagonal()};
     }
     matcher.match(detections, prior ? &*prior : nullptr, result);
+    startup.on_result(result.status, result.mode);
+    if (!was_done && startup.relocalized()) spdlog::info("relocalized globally after start; tracking from now on");
+    if (!was_done && startup.gave_up()) {
+      spdlog::warn("no global relocalization within {:.1f} s of start: tracking from the POSE prior",
+                   config.relocalize_on_start);
+    }
     if (prior && result.mode == MatchMode::kGlobal) ++runtime.counter("tracking_failures");
     if (result.mode == MatchMode::kGlobal) ++runtime.counter("global_relocalizations");
     if (result.status == MatchStatus::kLost) ++runtime.counter("lost_scans");

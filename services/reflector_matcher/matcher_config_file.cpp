@@ -23,6 +23,7 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
   s.use_own_pose_as_prior = config.boolean("/use_own_pose_as_prior", s.use_own_pose_as_prior);
   s.own_prior_sigma_xy = config.number("/own_prior_sigma_m", s.own_prior_sigma_xy, 0.001, 10.0);
   s.own_prior_sigma_theta = config.number("/own_prior_sigma_deg", s.own_prior_sigma_theta / kDeg, 0.01, 90.0) * kDeg;
+  s.relocalize_on_start = config.number("/relocalize_on_start_s", s.relocalize_on_start, 0.0, 60.0);
 
   m.min_range = config.number("/sensor/min_range_m", m.min_range, 0.0, 100.0);
   m.max_range = config.number("/sensor/max_range_m", m.max_range, 0.5, 100.0);

@@ -20,6 +20,9 @@ struct MatcherServiceConfig {
   bool use_own_pose_as_prior = true;     ///< track from the last OK match when no POSE is fresh
   double own_prior_sigma_xy = 0.3;       ///< [m] std dev assumed for the own previous pose
   double own_prior_sigma_theta = 5.0 * M_PI / 180.0;  ///< [rad]
+  /// After start, ignore priors until a global relocalization is OK, for at most
+  /// this long (StartupRelocalization); 0 = track from POSE at once [s].
+  double relocalize_on_start = 2.0;
 };
 
 /// Read and validate; base_dir resolves a relative map_file (usually the config file's folder).

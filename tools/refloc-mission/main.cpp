@@ -7,6 +7,7 @@
 #include "common/guarded_main.hpp"
 #include "common/json_config.hpp"
 #include "common/service_runtime.hpp"
+#include "mission_progress.hpp"
 #include "path_plot_svg.hpp"
 #include "trajectory.hpp"
 
@@ -19,6 +20,7 @@
 #include <refloc/pose2d_t.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 namespace refloc {
@@ -63,7 +65,8 @@ struct WaypointResult {
 
 class MissionMonitor {
  public:
-  MissionMonitor(ServiceRuntime& rt, Mission mission) : rt_(rt), mission_(std::move(mission)) {
+  MissionMonitor(ServiceRuntime& rt, Mission mission)
+      : rt_(rt), mission_(std::move(mission)), progress_(mission_.waypoints.size()) {
     results_.resize(mission_.waypoints.size());
     for (size_t i = 0; i < results_.size(); ++i) results_[i].target = mission_.waypoints[i];
     rt_.subscribe<pose2d_t>("GROUND_TRUTH", [this](const pose2d_t& m) {
@@ -94,18 +97,14 @@ class MissionMonitor {
       }
       rt_.spin_once(50);
     }
-    goal_id_ = now_utime();
     driving_ = true;
     drive_start_utime_ = now_utime();
-    fmt::print("localized; sending mission {} with {} waypoints\n", goal_id_, mission_.waypoints.size());
+    fmt::print("localized; sending a mission with {} waypoints\n", mission_.waypoints.size());
     const int64_t drive_start = monotonic_us();
-    int64_t last_goal_send = 0;
     while (!finished_ && !rt_.stop_requested()) {
-      // Resend until the navigator acknowledges: UDP has no last value for late joiners.
-      if (!acknowledged_ && monotonic_us() - last_goal_send > 1000000) {
-        send_goal();
-        last_goal_send = monotonic_us();
-      }
+      // Resend until the navigator acknowledges (UDP has no last value for late
+      // joiners), and the remaining waypoints whenever a restarted navigator forgot them.
+      if (progress_.needs_send(monotonic_us())) send_goal();
       if (monotonic_us() - drive_start > static_cast<int64_t>(mission_.timeout_s * 1e6)) {
         abort_reason_ = fmt::format("timeout after {:.0f} s", mission_.timeout_s);
         break;
@@ -148,6 +147,8 @@ class MissionMonitor {
     j["laser_pose_samples"] = laser_stats.count;
     j["odometry_drift_mm"] = odometry_drift_m() * 1000.0;
     j["duration_s"] = static_cast<double>(drive_end_utime_ - drive_start_utime_) * 1e-6;
+    j["goal_resends"] = progress_.resends();
+    j["navigator_goal_losses"] = progress_.goals_lost();
     j["aborted"] = !abort_reason_.empty();
     j["abort_reason"] = abort_reason_;
     j["log_file"] = log_file;
@@ -175,25 +176,35 @@ class MissionMonitor {
 
  private:
   void send_goal() {
+    const bool resend = progress_.goal_id() != 0;
     nav_goal_t goal;
     goal.utime = now_utime();
-    goal.goal_id = goal_id_;
+    goal.goal_id = progress_.start_goal(goal.utime, monotonic_us());
     goal.xy_tolerance = mission_.xy_tolerance_m;
     goal.heading_tolerance = mission_.heading_tolerance_rad;
     goal.max_speed = mission_.max_speed_m_s;
-    for (const auto& w : mission_.waypoints) {
+    for (size_t i = progress_.first_waypoint(); i < mission_.waypoints.size(); ++i) {
+      const Pose2& w = mission_.waypoints[i];
       goal.x.push_back(w.x);
       goal.y.push_back(w.y);
       goal.theta.push_back(w.theta);
     }
     goal.nwaypoints = static_cast<int32_t>(goal.x.size());
     rt_.publish("NAV_GOAL", goal);
+    if (resend) {
+      fmt::print("resending waypoints {}..{} as goal {} (navigator restarted or silent)\n",
+                 progress_.first_waypoint(), mission_.waypoints.size() - 1, goal.goal_id);
+      ++rt_.counter("goal_resends");
+    } else {
+      fmt::print("sent mission {}\n", goal.goal_id);
+    }
   }
 
   void on_status(const nav_status_t& m) {
-    if (!driving_ || m.goal_id != goal_id_) return;
-    acknowledged_ = true;
-    while (reached_ < static_cast<size_t>(std::max(0, m.waypoints_reached)) && reached_ < results_.size()) {
+    if (!driving_) return;
+    const int64_t now = monotonic_us();
+    const size_t newly = progress_.on_status(m.goal_id, static_cast<NavStatusState>(m.state), m.waypoints_reached, now);
+    for (size_t k = 0; k < newly; ++k) {
       auto& r = results_[reached_];
       r.reached = true;
       if (has_truth_) {
@@ -204,11 +215,8 @@ class MissionMonitor {
                  r.error_heading_rad * 180.0 / M_PI);
       ++reached_;
     }
-    if (m.state == nav_status_t::STATE_ARRIVED && reached_ >= results_.size()) finished_ = true;
-    if (m.state == nav_status_t::STATE_ABORTED) {
-      abort_reason_ = "navigator aborted: " + m.reason;
-      finished_ = true;
-    }
+    if (progress_.aborted() && abort_reason_.empty()) abort_reason_ = "navigator aborted: " + m.reason;
+    finished_ = progress_.finished();
   }
 
   /// Odometry alone, anchored to the truth at the first odometry sample of the run.
@@ -232,10 +240,9 @@ class MissionMonitor {
   bool has_truth_ = false;
   bool localized_ = false;
   bool driving_ = false;
-  bool acknowledged_ = false;
+  MissionProgress progress_;
   bool finished_ = false;
   size_t reached_ = 0;
-  int64_t goal_id_ = 0;
   int64_t drive_start_utime_ = 0;
   int64_t drive_end_utime_ = 0;
   std::string abort_reason_;
@@ -253,6 +260,8 @@ int main(int argc, char** argv) {
   app.add_option("--log-file", log_file, "the LCM log recorded alongside (reported in the JSON)");
   app.add_option("--plot", plot_file, "SVG plot of true vs estimated path (default: <log-file>.svg)");
   CLI11_PARSE(app, argc, argv);
+  // Progress lines as they happen, also into a pipe or file a supervising script reads.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   return refloc::guarded_main("refloc-mission", [&] {
     refloc::setup_logging("refloc-mission");
     const refloc::Mission mission = refloc::load_mission(mission_file);

@@ -1,0 +1,124 @@
+#!/usr/bin/env bash
+# Restart under load (issue 6), in a private netns (tests/tools/run_in_netns.sh):
+# the whole stack under supervisord (deploy/refloc) drives a mission
+# (tests/ops/data/restart_mission.json) while every service in turn is killed
+# with SIGKILL. Checks: supervisord restarts it; no other program's pid changes;
+# the mission still reaches every waypoint within tolerance; from the LCM log
+# (restart_log_check): POSE gap <= 1 s per kill, the new process back to useful
+# output, and the restarted matcher's first OK is a global relocalization.
+#   restart_under_load.sh REPO_ROOT BUILD_DIR
+# Not killed: robot_sim is the simulated physical world (killing it resets the
+# plant, which no real robot does), and lcm-logger records the log we measure.
+set -euo pipefail
+repo="$1"
+build="$2"
+tmp="$(mktemp -d /tmp/refloc_restart_test.XXXXXX)"
+export REFLOC_BUILD="$build" REFLOC_RUN_DIR="$tmp/run" REFLOC_LOG_DIR="$tmp/logs"
+export REFLOC_CONFIG_DIR="$repo/deploy/config" REFLOC_LOG_SPLIT_MB=2000
+export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0"
+export REFLOC_ARGS_lms100_driver="--host 127.0.0.1"
+unset REFLOC_PROGRAMS
+refloc="$repo/deploy/refloc"
+kills="$tmp/kills.txt"
+victims=(lms100_driver reflector_extractor reflector_matcher pose_solver mecanum_odometry pose_fusion navigator)
+programs=(lcm-logger robot_sim "${victims[@]}")
+spacing_us=3500000   # kill to kill; each restart's recovery is seen before the next kill
+mission_pid=""
+passed=false
+
+cleanup() {
+  [ -n "$mission_pid" ] && kill "$mission_pid" 2>/dev/null || true
+  if [ -f "$REFLOC_RUN_DIR/supervisord.pid" ]; then "$refloc" stop >/dev/null 2>&1 || true; fi
+  if [ "$passed" = true ]; then rm -rf "$tmp"; else echo "kept $tmp for inspection" >&2; fi
+}
+trap cleanup EXIT
+
+fail() {
+  echo "FAIL: $*" >&2
+  [ -f "$tmp/mission.out" ] && { echo "--- refloc-mission output:" >&2; cat "$tmp/mission.out" >&2; }
+  exit 1
+}
+now_us() { date +%s%6N; }
+# "name pid" of every program, pid empty unless RUNNING; one supervisorctl call
+# (each costs a Python start-up). deploy/refloc status prints "name RUNNING pid N, uptime ...".
+all_pids() {
+  "$refloc" status 2>/dev/null | awk '{pid = ""} $2 == "RUNNING" {pid = $4; sub(",", "", pid)} {print $1, pid}' || true
+}
+pid_in() { awk -v n="$1" '$1 == n {print $2}' <<<"$2"; }
+program_pid() { pid_in "$1" "$(all_pids)"; }
+
+for b in "${victims[@]}" robot_sim refloc-mission; do
+  [ -x "$build/bin/$b" ] || { echo "SKIP: $build/bin/$b not built"; exit 77; }
+done
+command -v supervisord >/dev/null && command -v lcm-logger >/dev/null || { echo "SKIP: no supervisord/lcm-logger"; exit 77; }
+
+"$refloc" start >/dev/null || fail "deploy/refloc start"
+for _ in $(seq 300); do
+  missing=0
+  pids="$(all_pids)"
+  for p in "${programs[@]}"; do [ -n "$(pid_in "$p" "$pids")" ] || missing=1; done
+  [ $missing = 0 ] && break
+  sleep 0.1
+done
+[ $missing = 0 ] || fail "not everything RUNNING: $("$refloc" status || true)"
+
+"$build/bin/refloc-mission" --mission "$repo/tests/ops/data/restart_mission.json" --json "$tmp/mission.json" \
+  --log-file "$tmp/logs/refloc.0" --plot "$tmp/path.svg" >"$tmp/mission.out" 2>&1 &
+mission_pid=$!
+for _ in $(seq 600); do
+  grep -q "^sent mission" "$tmp/mission.out" && break
+  kill -0 "$mission_pid" 2>/dev/null || fail "refloc-mission ended before driving"
+  sleep 0.1
+done
+grep -q "^sent mission" "$tmp/mission.out" || fail "the mission never started"
+sleep 2   # under way
+
+: >"$kills"
+for victim in "${victims[@]}"; do
+  kill -0 "$mission_pid" 2>/dev/null || fail "the mission ended before $victim was killed: kill spacing too long for it"
+  before="$(all_pids)"
+  old="$(pid_in "$victim" "$before")"
+  [ -n "$old" ] || fail "$victim not RUNNING before its kill"
+  kill -9 "$old"
+  t_kill="$(now_us)"
+  new=""
+  for _ in $(seq 200); do  # RUNNING again (supervisord: startsecs=1)
+    new="$(program_pid "$victim")"
+    [ -n "$new" ] && [ "$new" != "$old" ] && break
+    new=""
+    sleep 0.05
+  done
+  [ -n "$new" ] || fail "$victim was not restarted: $("$refloc" status "$victim" || true)"
+  echo "$victim $old $t_kill $new" >>"$kills"
+  # Recovery window, then nobody else may have died meanwhile.
+  remaining_us=$(( t_kill + spacing_us - $(now_us) ))
+  [ "$remaining_us" -gt 0 ] && sleep "$(printf '%d.%06d' $((remaining_us / 1000000)) $((remaining_us % 1000000)))"
+  after="$(all_pids)"
+  while read -r name pid; do
+    [ "$name" = "$victim" ] && continue
+    now_pid="$(pid_in "$name" "$after")"
+    [ "$pid" = "$now_pid" ] || fail "$name changed pid ($pid -> ${now_pid:-none}) while $victim restarted"
+  done <<<"$before"
+  echo "killed $victim (pid $old) -> restarted as pid $new; others unchanged"
+done
+
+set +e
+wait "$mission_pid"
+mission_rc=$?
+set -e
+mission_pid=""
+cat "$tmp/mission.out"
+"$refloc" stop >/dev/null 2>&1 || true   # lcm-logger flushes the log
+[ "$mission_rc" = 0 ] || fail "refloc-mission exited $mission_rc: not every waypoint reached within tolerance"
+python3 - "$tmp/mission.json" <<'PY' || fail "mission report"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["waypoints_reached"] == r["waypoints_total"], r
+assert not r["aborted"], r["abort_reason"]
+assert r["max_waypoint_error_mm"] < 20.0, r["max_waypoint_error_mm"]
+print(f"mission: {r['waypoints_reached']}/{r['waypoints_total']} waypoints, max true error "
+      f"{r['max_waypoint_error_mm']:.1f} mm, {r['duration_s']:.1f} s, goal resends {r['goal_resends']}")
+PY
+"$build/bin/ops_restart_log_check" --log "$tmp/logs/refloc.0" --kills "$kills" || fail "restart checks (table above)"
+passed=true
+echo "PASS"
