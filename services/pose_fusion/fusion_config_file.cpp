@@ -19,6 +19,7 @@ FusionServiceConfig parse_fusion_service_config(const JsonConfig& config) {
   OdometryContinuityConfig& o = c.continuity;
   o.max_gap = config.number("/odometry_max_gap_s", o.max_gap, 0.01, 60.0);
   o.max_speed = config.number("/odometry_seam_max_speed_m_s", o.max_speed, 0.01, 10.0);
+  c.odometry_timeout = config.number("/odometry_timeout_s", c.odometry_timeout, 0.01, 10.0);
   o.max_yaw_rate = config.number("/odometry_seam_max_yaw_rate_rad_s", o.max_yaw_rate, 0.01, 20.0);
   c.odometry_channel = config.string("/odometry_channel", c.odometry_channel);
   c.fix_channel = config.string("/fix_channel", c.fix_channel);

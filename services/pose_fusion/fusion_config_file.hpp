@@ -18,6 +18,8 @@ struct FusionServiceConfig {
   OdometryNoise odometry_noise;
   /// When consecutive ODOMETRY messages are not one continuous frame.
   OdometryContinuityConfig continuity;
+  /// No ODOMETRY this long: fixes are published as DEGRADED POSE (OdometrySilence) [s].
+  double odometry_timeout = 0.1;
   std::string odometry_channel = "ODOMETRY";
   std::string fix_channel = "LASER_POSE";
   std::string output_channel = "POSE";

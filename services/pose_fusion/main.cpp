@@ -1,11 +1,13 @@
 // pose_fusion: ODOMETRY (odometry_t) + LASER_POSE (pose2d_t) -> POSE (pose2d_t),
 // one output per odometry message.
 
+#include "common/clock.hpp"
 #include "common/guarded_main.hpp"
 #include "common/json_config.hpp"
 #include "common/service_runtime.hpp"
 #include "pose_fusion/fusion_config_file.hpp"
 #include "pose_fusion/odometry_continuity.hpp"
+#include "pose_fusion/odometry_silence.hpp"
 #include "pose_fusion/pose_fusion.hpp"
 
 #include <CLI/CLI.hpp>
@@ -60,6 +62,7 @@ int run(const std::string& lcm_url, const std::string& config_path) {
   ServiceRuntime runtime("pose_fusion", lcm_url);
   PoseFusion fusion(config.fusion);
   OdometryContinuity continuity(config.continuity);
+  OdometrySilence silence(config.odometry_timeout);
   int32_t reflectors_used = 0;
   FusionStatus published_status = FusionStatus::kInitializing;
 
@@ -116,6 +119,7 @@ int run(const std::string& lcm_url, const std::string& config_path) {
     out.reflectors_used = reflectors_used;
     out.residual = 0.0;
     runtime.publish(config.output_channel, out);
+    silence.on_odometry(monotonic_us(), out.utime);
     runtime.set_state(status == FusionStatus::kOk ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED,
                       status == FusionStatus::kOk ? "" : to_string(status));
   });
@@ -125,6 +129,14 @@ int run(const std::string& lcm_url, const std::string& config_path) {
     if (!fix) {
       ++runtime.counter("fixes_unusable");
       return;
+    }
+    if (silence.publish_fix(monotonic_us(), msg.utime)) {
+      // No ODOMETRY (its service restarting?): the fix itself, DEGRADED, rather than no POSE at all.
+      pose2d_t out = msg;
+      out.status = pose2d_t::STATUS_DEGRADED;
+      out.residual = 0.0;
+      runtime.publish(config.output_channel, out);
+      ++runtime.counter("fixes_published_without_odometry");
     }
     const FixResult result = fusion.add_fix(*fix);
     count_fix_result(result);

@@ -1,6 +1,7 @@
 // pose_fusion across a restart of mecanum_odometry: the new odometry frame starts
 // at the origin with distance 0, and the robot kept moving while nobody counted.
 #include "pose_fusion/odometry_continuity.hpp"
+#include "pose_fusion/odometry_silence.hpp"
 #include "pose_fusion/pose_fusion.hpp"
 
 #include "mecanum_odometry/exact_arc.hpp"
@@ -151,6 +152,21 @@ TEST(PoseFusion, FixWellAheadOfOdometryWaitsForItInsteadOfBeingGatedAgainstAStal
   ASSERT_EQ(h.fusion().deferred_results().size(), 0U);  // applied by the step that reached it, at 0.3 s
   EXPECT_EQ(h.fusion().consecutive_rejections(), 0);
   EXPECT_LT(h.error_m(kT0 + 310'000), 0.005);
+}
+
+TEST(OdometrySilence, FixesBecomePoseOnlyWhileOdometryIsSilentAndNeverGoBackInTime) {
+  OdometrySilence s(0.1);
+  EXPECT_TRUE(s.publish_fix(0, kT0));  // no odometry ever yet
+  s.on_odometry(1'000'000, kT0 + 100'000);
+  EXPECT_FALSE(s.publish_fix(1'050'000, kT0 + 110'000));  // odometry alive: POSE comes from it
+  // Odometry dies: fixes take over after 0.1 s ...
+  EXPECT_FALSE(s.publish_fix(1'090'000, kT0 + 150'000));
+  EXPECT_TRUE(s.publish_fix(1'110'000, kT0 + 170'000));
+  EXPECT_FALSE(s.publish_fix(1'130'000, kT0 + 170'000));  // the same time again: no
+  EXPECT_TRUE(s.publish_fix(1'150'000, kT0 + 190'000));
+  // ... until the restarted odometry publishes again.
+  s.on_odometry(1'400'000, kT0 + 400'000);
+  EXPECT_FALSE(s.publish_fix(1'410'000, kT0 + 410'000));
 }
 
 }  // namespace
