@@ -54,6 +54,18 @@ struct MatcherConfig {
   double distinct_pose_angle = 5.0 * M_PI / 180.0;  ///< [rad] ... or this much from the best
 
   int min_matches = 3;  ///< fewer explained detections -> LOST
+  /// A global hypothesis scoring less is no fix: three detections that fit somewhere while
+  /// reflectors that pose expects go unseen are a chance alignment as often as not [-].
+  double global_min_score = 2.0;
+
+  /// A tracked association leaving more detections unexplained than this is checked by global
+  /// relocalization: a prior that is off (kidnapped robot, odometry jump) can line three
+  /// detections up with the wrong reflectors and leave the rest unexplained [-].
+  int tracking_max_unexplained = 1;
+  /// Same when the tracked pose's verification score is below this (score as in
+  /// missed_penalty): three wrong pairs near a wrong prior leave the reflectors really in view
+  /// unexplained or "missing" [-].
+  double tracking_min_score = 2.0;
 };
 
 }  // namespace refloc

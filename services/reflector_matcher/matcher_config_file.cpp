@@ -38,6 +38,9 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
       config.number("/tracking/prior_min_sigma_deg", m.prior_min_sigma_theta / kDeg, 0.0, 90.0) * kDeg;
   m.tracking_gate_chi2 = config.number("/tracking/gate_chi2", m.tracking_gate_chi2, 0.1, 1000.0);
   m.detection_min_sigma = config.number("/tracking/detection_min_sigma_m", m.detection_min_sigma, 0.0, 1.0);
+  m.tracking_max_unexplained =
+      static_cast<int>(config.integer("/tracking/max_unexplained", m.tracking_max_unexplained, 0, 1000));
+  m.tracking_min_score = config.number("/tracking/min_score", m.tracking_min_score, -1000.0, 1000.0);
 
   m.triangle_side_tolerance = config.number("/relocalization/side_tolerance_m", m.triangle_side_tolerance, 0.001, 2.0);
   m.min_triangle_side = config.number("/relocalization/min_triangle_side_m", m.min_triangle_side, 0.0, 50.0);
@@ -57,6 +60,7 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
   m.unexplained_penalty = config.number("/relocalization/unexplained_penalty", m.unexplained_penalty, 0.0, 10.0);
   m.min_explained_fraction =
       config.number("/relocalization/min_explained_fraction", m.min_explained_fraction, 0.0, 1.0);
+  m.global_min_score = config.number("/relocalization/min_score", m.global_min_score, -1000.0, 1000.0);
   m.ambiguity_ratio = config.number("/relocalization/ambiguity_ratio", m.ambiguity_ratio, 0.0, 1.0);
   m.ambiguity_missed_margin =
       config.number("/relocalization/ambiguity_missed_margin", m.ambiguity_missed_margin, 0.0, 100.0);

@@ -1,5 +1,7 @@
 #include "reflector_matcher/reflector_matcher.hpp"
 
+#include "common/se2.hpp"
+
 namespace refloc {
 
 ReflectorMatcher::ReflectorMatcher(ReflectorMap map, const MatcherConfig& config)
@@ -23,8 +25,41 @@ void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, 
     paper_->match(detections, result);
     return;
   }
-  if (prior != nullptr && tracker_->associate(detections, *prior, result)) return;
+  if (prior == nullptr || !tracker_->associate(detections, *prior, result)) {
+    relocalizer_->relocalize(detections, result);
+    return;
+  }
+  const int unexplained = result.ndetections - static_cast<int>(result.matches.size());
+  if (unexplained <= config_.tracking_max_unexplained && result.hypothesis_score >= config_.tracking_min_score) return;
+  // A weak association (distractors, hidden reflectors, or a prior that is off) is checked by the
+  // map-wide search, which owes nothing to the prior.
+  std::swap(tracked_, result);
   relocalizer_->relocalize(detections, result);
+  const bool global_ok = result.status == MatchStatus::kOk;
+  if (global_ok && !approx_equal(result.map_T_laser, tracked_.map_T_laser, config_.distinct_pose_distance,
+                                 config_.distinct_pose_angle)) {
+    // The map prefers a different pose. Clearly better: the prior was wrong (kidnapped robot,
+    // odometry jump), take the map's. About as good: both are plausible, no fix.
+    if (result.hypothesis_score >= tracked_.hypothesis_score + config_.ambiguity_missed_margin) return;
+    result.status = MatchStatus::kAmbiguous;
+    result.runner_up_score = tracked_.hypothesis_score;
+    result.matches.clear();
+    return;
+  }
+  // The map agrees, or alone cannot decide (symmetric layouts are where tracking earns its keep):
+  // keep the tracked association if it explains as much of the scan as a global OK must and,
+  // when weak and unconfirmed, all of it (three wrong pairs next to a wrong prior leave the
+  // real reflectors in view unexplained).
+  const int tracked_unexplained = tracked_.ndetections - static_cast<int>(tracked_.matches.size());
+  const bool weak_unconfirmed = !global_ok && tracked_.hypothesis_score < config_.tracking_min_score;
+  if (static_cast<double>(tracked_.matches.size()) < config_.min_explained_fraction * tracked_.ndetections ||
+      (weak_unconfirmed && tracked_unexplained > 0)) {
+    result.mode = MatchMode::kTracking;
+    result.status = MatchStatus::kLost;
+    result.matches.clear();
+    return;
+  }
+  std::swap(tracked_, result);
 }
 
 }  // namespace refloc

@@ -43,6 +43,7 @@ class ReflectorMatcher {
   std::unique_ptr<GlobalRelocalizer> relocalizer_;
   std::unique_ptr<TrackingAssociator> tracker_;
   std::unique_ptr<PaperTriangleMatcher> paper_;
+  MatchResult tracked_;  ///< a doubtful tracking result while the global search runs
 };
 
 }  // namespace refloc

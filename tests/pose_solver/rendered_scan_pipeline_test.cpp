@@ -76,13 +76,70 @@ Tally run_pipeline(const std::string& world_file, int poses, unsigned seed) {
 TEST(RenderedScanPipeline, DemoHallRelocalizesWithoutWrongOkAndSolvesWithinCentimetres) {
   const Tally t = run_pipeline("world_demo.json", 1000, 70);
   EXPECT_EQ(t.wrong_ok, 0);
-  EXPECT_GE(t.match_ok, t.poses * 85 / 100);
+  // Single scans from scratch: hypotheses scoring below /relocalization/min_score (2.0) are
+  // refused, which costs ~16 % of the fixes and removed every wrong one in 40,000 scans.
+  EXPECT_GE(t.match_ok, t.poses * 65 / 100);
   EXPECT_LT(t.rms, 0.015);
 }
 
 TEST(RenderedScanPipeline, SymmetricWorldIsNeverWrongOk) {
   const Tally t = run_pipeline("world_symmetric.json", 500, 71);
   EXPECT_EQ(t.wrong_ok, 0);
+}
+
+/// Wrong OK matches in the demo hall when tracking starts from a confident prior offset metres
+/// off the truth (a kidnapped robot, an odometry jump), with and without the global check.
+struct WrongPriorTally {
+  int scans = 0, ok_checked = 0, wrong_checked = 0, ok_trusting = 0, wrong_trusting = 0;
+};
+
+WrongPriorTally run_wrong_prior(double offset, int poses, unsigned seed) {
+  const std::string dir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config";
+  const sim::World world = sim::load_world(dir + "/world_demo.json");
+  const ReflectorMap map = load_reflector_map(world.map_file);
+  const Pose2 robot_T_laser = load_robot_config(dir + "/robot.json").robot_T_laser;
+  ReflectorExtractor extractor;
+  MatcherConfig trusting_config;
+  trusting_config.tracking_max_unexplained = 1000;
+  trusting_config.tracking_min_score = -1000.0;
+  ReflectorMatcher checked(map, MatcherConfig{}), trusting(map, trusting_config);
+  sim::ScanRenderer renderer;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> ux(0.5, 19.5), uy(0.5, 11.5), ua(-M_PI, M_PI);
+  LaserScan scan;
+  MatchResult match;
+  WrongPriorTally t;
+  while (t.scans < poses) {
+    const Pose2 truth{ux(rng), uy(rng), ua(rng)};
+    if (!world.drivable_areas.empty() && !world.is_drivable(truth.translation())) continue;
+    ++t.scans;
+    const Pose2 map_T_laser = truth * robot_T_laser;
+    renderer.render(world, map_T_laser, 1'000'000 + t.scans * 20'000, rng, scan);
+    const std::vector<ReflectorDetection> detections = extractor.extract(scan);
+    const double dir = ua(rng);
+    PosePrior prior;
+    prior.map_T_laser = Pose2{map_T_laser.x + offset * std::cos(dir), map_T_laser.y + offset * std::sin(dir),
+                              map_T_laser.theta};
+    prior.covariance = Eigen::Vector3d(0.02 * 0.02, 0.02 * 0.02, 0.01 * 0.01).asDiagonal();
+    for (ReflectorMatcher* m : {&checked, &trusting}) {
+      m->match(detections, &prior, match);
+      if (match.status != MatchStatus::kOk) continue;
+      const bool wrong = !approx_equal(match.map_T_laser, map_T_laser, 0.2, 5.0 * M_PI / 180.0);
+      (m == &checked ? t.ok_checked : t.ok_trusting)++;
+      (m == &checked ? t.wrong_checked : t.wrong_trusting) += wrong;
+    }
+  }
+  std::printf("prior %.1f m off, %d scans: checked OK %d (wrong %d), trusting OK %d (wrong %d)\n", offset, t.scans,
+              t.ok_checked, t.wrong_checked, t.ok_trusting, t.wrong_trusting);
+  return t;
+}
+
+TEST(RenderedScanPipeline, APriorMetresOffIsOverruledByTheMapNeverConfirmed) {
+  const WrongPriorTally t = run_wrong_prior(2.0, 2000, 7);
+  EXPECT_EQ(t.wrong_checked, 0);
+  EXPECT_GE(t.ok_checked, t.scans * 65 / 100);  // as many as relocalization from scratch finds
+  // The same scans without the check: tracking alone confirms some wrong priors.
+  EXPECT_GT(t.wrong_trusting, 0);
 }
 
 }  // namespace
