@@ -48,12 +48,13 @@ void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, 
   }
   // The map agrees, or alone cannot decide (symmetric layouts are where tracking earns its keep):
   // keep the tracked association if it explains as much of the scan as a global OK must and,
-  // when weak and unconfirmed, all of it (three wrong pairs next to a wrong prior leave the
-  // real reflectors in view unexplained).
-  const int tracked_unexplained = tracked_.ndetections - static_cast<int>(tracked_.matches.size());
-  const bool weak_unconfirmed = !global_ok && tracked_.hypothesis_score < config_.tracking_min_score;
-  if (static_cast<double>(tracked_.matches.size()) < config_.min_explained_fraction * tracked_.ndetections ||
-      (weak_unconfirmed && tracked_unexplained > 0)) {
+  // when it rests on the bare minimum of pairs, weak and unconfirmed, all of it: three wrong
+  // pairs next to a wrong prior leave the real reflectors in view unexplained.
+  const auto tracked_matched = static_cast<int>(tracked_.matches.size());
+  const bool bare_unconfirmed = !global_ok && tracked_matched <= config_.min_matches &&
+                                tracked_.hypothesis_score < config_.tracking_min_score;
+  if (tracked_matched < config_.min_explained_fraction * tracked_.ndetections ||
+      (bare_unconfirmed && tracked_matched < tracked_.ndetections)) {
     result.mode = MatchMode::kTracking;
     result.status = MatchStatus::kLost;
     result.matches.clear();
