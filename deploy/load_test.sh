@@ -23,6 +23,7 @@
 #   --max-p99-ms MS     scan-to-pose p99 limit; 0 = report only (sanitizer builds) [5]
 #   --warmup-timeout S  wait this long for the first LASER_POSE [60]
 #   --mission FILE      mission repeated to keep the robot driving [deploy/config/mission_demo.json]
+# Environment: REFLOC_CONFIG_DIR (service configs, as for deploy/refloc), LCM_DEFAULT_URL.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -43,7 +44,7 @@ while [ $# -gt 0 ]; do
     --max-p99-ms) max_p99_ms="$2"; shift 2 ;;
     --warmup-timeout) warmup_timeout="$2"; shift 2 ;;
     --mission) mission="$2"; shift 2 ;;
-    -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "load_test: unknown argument '$1' (see --help)" >&2; exit 64 ;;
   esac
 done
@@ -90,7 +91,10 @@ trap cleanup EXIT
 load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 echo "== load test: ${duration} s, build $REFLOC_BUILD, $(nproc) cores, load average $load_before"
 echo "== run dir $run_dir"
-deploy/refloc start "${services[@]}" >/dev/null
+if ! deploy/refloc start "${services[@]}" >/dev/null; then
+  echo "load_test: not every service started; see $REFLOC_RUN_DIR" >&2
+  exit 2
+fi
 
 # Warm: every service beats and the solver has published poses.
 echo "== waiting for the first LASER_POSE (at most ${warmup_timeout} s)"
