@@ -175,7 +175,7 @@ mission_s="$(seconds_since "$mission_started_s")"
 
 say "refloc-status --once on host c"
 set +e
-on_host c "$build/bin/refloc-status" --lcm-url "$url1" --once --wait 3 | tee "$tmp/status.out"
+on_host c "$build/bin/refloc-status" --lcm-url "$url1" --once --wait 3 --max-age 5 | tee "$tmp/status.out"
 status_rc=${PIPESTATUS[0]}
 set -e
 
