@@ -21,7 +21,8 @@ repo="$1"
 build="$2"
 tmp="$(mktemp -d /tmp/refloc_restart_test.XXXXXX)"
 export REFLOC_BUILD="$build" REFLOC_RUN_DIR="$tmp/run" REFLOC_LOG_DIR="$tmp/logs"
-export REFLOC_CONFIG_DIR="$repo/deploy/config" REFLOC_LOG_SPLIT_MB=2000
+# REFLOC_RESTART_CONFIG_DIR: other service configs, e.g. to see a check fail.
+export REFLOC_CONFIG_DIR="${REFLOC_RESTART_CONFIG_DIR:-$repo/deploy/config}" REFLOC_LOG_SPLIT_MB=2000
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0"
 export REFLOC_ARGS_lms100_driver="--host 127.0.0.1"
 unset REFLOC_PROGRAMS
