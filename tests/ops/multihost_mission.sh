@@ -56,9 +56,10 @@ on_host() {
 }
 # Every process still in host H's namespace (by pid; only our private namespaces).
 kill_host_processes() {
-  local ns pid
+  local ns pid dir
   ns="$(readlink "/proc/${holder[$1]}/ns/net")" || return 0
-  for pid in $(ls /proc | grep -E '^[0-9]+$'); do
+  for dir in /proc/[0-9]*; do
+    pid="${dir#/proc/}"
     [ "$pid" = "${holder[$1]}" ] && continue
     [ "$(readlink "/proc/$pid/ns/net" 2>/dev/null)" = "$ns" ] && kill -9 "$pid" 2>/dev/null
   done

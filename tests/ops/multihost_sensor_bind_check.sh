@@ -52,7 +52,7 @@ echo "default: $endpoint"
 for bad in 10.99.0.1 eth0; do
   rc=0
   timeout 20 "${sim[@]}" --sensor-bind-address "$bad" >"$tmp/bad.log" 2>&1 || rc=$?
-  [ $rc -ne 0 ] && [ $rc -ne 124 ] || fail "robot_sim --sensor-bind-address $bad: exit $rc, expected a startup error"
+  if [ $rc -eq 0 ] || [ $rc -eq 124 ]; then fail "robot_sim --sensor-bind-address $bad: exit $rc, expected a startup error"; fi
   grep -q "$bad" "$tmp/bad.log" || fail "the error does not name $bad: $(cat "$tmp/bad.log")"
   echo "--sensor-bind-address $bad: exit $rc, $(grep -m1 "$bad" "$tmp/bad.log")"
 done
