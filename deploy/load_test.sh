@@ -226,7 +226,8 @@ report="$(jq --argjson procs "$procs" --argjson duration "$duration" --argjson t
               expected_50hz_over_log: (50 * $l.scans.duration_s + 1 | round), log_duration_s: $l.scans.duration_s,
               expected_from_counter: $l.scans.expected,
               rate_hz: $l.scans.rate_hz, missing_counters: $l.scans.missing, counter_gaps: $l.scans.gap_count,
-              duplicates: $l.scans.duplicates, out_of_order: $l.scans.out_of_order, gaps: $l.scans.gaps,
+              duplicates: $l.scans.duplicates, out_of_order: $l.scans.out_of_order,
+              unlogged_but_processed: $l.scans.unlogged_but_processed, gaps: $l.scans.gaps,
               stages: $l.scans.stages, dropped: $l.scans.dropped},
       latency_ms: $l.latency.end_to_end,
       latency_stages_ms: $l.latency.stages,
@@ -256,7 +257,7 @@ jq -r '
   "== load test result (\(.run.measured_s | floor) s measured, \(.run.cores) cores, load average \(.run.load_average_before) before, \(.run.load_average_after) after)",
   "scans: published \(.scans.published) in \(.scans.log_duration_s * 10 | round / 10) s of log (\(.scans.rate_hz * 100 | round / 100) Hz), expected \(.scans.expected_50hz_over_log) at 50 Hz over the log (\(.scans.expected_50hz) over the nominal \(.run.duration_s) s); counter span \(.scans.expected_from_counter), missing \(.scans.missing_counters) in \(.scans.counter_gaps) gaps, duplicates \(.scans.duplicates)",
   (.scans.stages[] | "  \(.channel): \(.messages) messages, scans reached \(.scans_reached), without it \(.scans_missing)"),
-  "dropped scans: \(.scans.dropped)",
+  "dropped scans: \(.scans.dropped) (missing counters that no later stage saw either, plus scans without a LASER_POSE; \(.scans.unlogged_but_processed) scans only the logger missed)",
   "scan-to-LASER_POSE latency [ms]: p50 \(.latency_ms.p50_ms * 1000 | round / 1000)  p99 \(.latency_ms.p99_ms * 1000 | round / 1000)  max \(.latency_ms.max_ms * 1000 | round / 1000)  (\(.latency_ms.count) scans; p99 limit \(if .checks.max_p99_ms > 0 then "\(.checks.max_p99_ms) ms" else "none" end))"
 ' <<<"$report"
 jq -r '

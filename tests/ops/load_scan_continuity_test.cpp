@@ -105,6 +105,32 @@ TEST(LoadScanContinuity, ScansWithoutALaserPoseAreDroppedButNotTheLastOnesBefore
   EXPECT_EQ(r.dropped(), 4 + 1);
 }
 
+TEST(LoadScanContinuity, AScanTheLoggerMissedButTheExtractorProcessedIsNotDropped) {
+  const std::string path = testing::temp_path("unlogged.lcmlog");
+  {
+    testing::LcmLogWriter log(path);
+    for (int i = 0; i < 10; ++i) {
+      laser_scan_t scan{};
+      scan.utime = kT0 + i * 20'000;
+      scan.scan_counter = i;
+      if (i != 4 && i != 6) log.write("LMS100_SCAN", scan.utime, scan);  // 4 and 6 lost by the logger...
+      reflector_detections_t det{};
+      det.utime = scan.utime;
+      if (i != 6) log.write("REFLECTORS", scan.utime + 1'000, det);  // ... 6 also by the extractor
+      pose2d_t pose{};
+      pose.utime = scan.utime;
+      if (i != 6) log.write("LASER_POSE", scan.utime + 2'000, pose);
+    }
+    heartbeat_t hb = beat("pose_solver", 1, 0, 1.0f);
+    log.write("HEARTBEAT", kT0 + 2'000'000, hb);  // the log goes on: no tail grace for the scans
+  }
+  const auto r = check(path);
+  EXPECT_EQ(r.missing, 2);
+  EXPECT_EQ(r.unlogged_but_processed, 1);
+  EXPECT_EQ(r.stages[2].scans_missing, 0);
+  EXPECT_EQ(r.dropped(), 1);
+}
+
 TEST(LoadScanContinuity, DuplicateAndReorderedCountersAreCountedNotMissing) {
   const std::string path = testing::temp_path("dup.lcmlog");
   {

@@ -156,7 +156,8 @@ std::string format_scan_continuity(const ScanContinuityReport& r) {
     out += fmt::format("  {:<20} messages {:>8}  scans reached {:>8}  scans missing {:>6}\n", s.channel, s.messages,
                        s.scans_reached, s.scans_missing);
   }
-  out += fmt::format("  dropped scans: {}\n", r.dropped());
+  out += fmt::format("  not logged but processed downstream: {}\n  dropped scans: {}\n", r.unlogged_but_processed,
+                     r.dropped());
   if (!r.services.empty()) {
     out += "service health from HEARTBEAT\n";
     out += fmt::format("  {:<22} {:>6} {:>10} {:>10} {:>8} {:>9} {:>9} {:>8}\n", "SERVICE", "BEATS", "IN(LOG)",
@@ -206,6 +207,7 @@ nlohmann::ordered_json scan_continuity_to_json(const ScanContinuityReport& r) {
           {"gap_count", r.gap_count},
           {"duplicates", r.duplicates},
           {"out_of_order", r.out_of_order},
+          {"unlogged_but_processed", r.unlogged_but_processed},
           {"dropped", r.dropped()},
           {"gaps", std::move(gaps)},
           {"stages", std::move(stages)},

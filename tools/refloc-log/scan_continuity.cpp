@@ -6,7 +6,7 @@ namespace refloc {
 
 int64_t ScanContinuityReport::dropped() const {
   const int64_t unprocessed = stages.empty() ? 0 : stages.back().scans_missing;
-  return missing + unprocessed;
+  return std::max<int64_t>(0, missing - unlogged_but_processed) + unprocessed;
 }
 
 ScanContinuity::ScanContinuity(std::string scan_channel, std::vector<std::string> stages, double tail_grace_s,
@@ -116,6 +116,12 @@ ScanContinuityReport ScanContinuity::report() const {
       }
     }
   }
+  std::set<int64_t> downstream_only;
+  for (const auto& scans : stage_scans_) {
+    for (int64_t scan_utime : scans)
+      if (scan_log_utime_.count(scan_utime) == 0) downstream_only.insert(scan_utime);
+  }
+  r.unlogged_but_processed = static_cast<int64_t>(downstream_only.size());
   for (const auto& [name, a] : services_) r.services.push_back(a.health);
   return r;
 }

@@ -62,10 +62,13 @@ struct ScanContinuityReport {
   double rate_hz = 0.0;          ///< (scans - 1) / duration_s
   std::vector<ScanCounterGap> gaps;  ///< at most max_gaps, in log order
   int64_t gap_count = 0;             ///< all of them
+  /// Scans the log lacks on the scan channel but a later stage has (by utime):
+  /// published, processed, only the logger missed them.
+  int64_t unlogged_but_processed = 0;
   std::vector<StageCoverage> stages;
   std::vector<ServiceHealth> services;  ///< by name
-  /// Scans lost anywhere: missing counters plus scans that never reached the
-  /// last stage (within the grace rule).
+  /// Scans lost anywhere: missing counters that no stage saw either, plus scans
+  /// that never reached the last stage (within the grace rule).
   int64_t dropped() const;
 };
 
