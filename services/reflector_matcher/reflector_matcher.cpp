@@ -38,9 +38,10 @@ void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, 
   const bool global_ok = result.status == MatchStatus::kOk;
   if (global_ok && !approx_equal(result.map_T_laser, tracked_.map_T_laser, config_.distinct_pose_distance,
                                  config_.distinct_pose_angle)) {
-    // The map prefers a different pose. Clearly better: the prior was wrong (kidnapped robot,
-    // odometry jump), take the map's. About as good: both are plausible, no fix.
-    if (result.hypothesis_score >= tracked_.hypothesis_score + config_.ambiguity_missed_margin) return;
+    // The map alone points elsewhere: the prior may be wrong (kidnapped robot, odometry jump)
+    // or the map-wide search fooled by a weak scene; scores cannot tell which here (unmapped
+    // racks make "unseen" reflectors common), so no fix. Without fixes POSE ages, the prior
+    // goes, and relocalization starts from the map alone.
     result.status = MatchStatus::kAmbiguous;
     result.runner_up_score = tracked_.hypothesis_score;
     result.matches.clear();
