@@ -2,14 +2,14 @@
 // one output per encoder sample.
 
 #include "common/clock.hpp"
-#include "common/guarded_main.hpp"
+#include "common/lcm_conversions.hpp"
+#include "common/service_command_line.hpp"
 #include "common/json_config.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_runtime.hpp"
 #include "mecanum_odometry/mecanum_odometry.hpp"
 #include "mecanum_odometry/odometry_config_file.hpp"
 
-#include <CLI/CLI.hpp>
 #include <refloc/odometry_t.hpp>
 #include <refloc/wheel_encoders_t.hpp>
 
@@ -25,9 +25,7 @@ odometry_t to_message(const OdometryEstimate& e) {
   msg.vx = e.twist.vx;
   msg.vy = e.twist.vy;
   msg.wz = e.twist.wz;
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) msg.covariance[3 * r + c] = e.covariance(r, c);
-  }
+  covariance_to_lcm(e.covariance, msg.covariance);
   msg.distance = e.distance;
   msg.slip_indicator = e.slip_indicator;
   return msg;
@@ -84,16 +82,7 @@ int run(const std::string& lcm_url, const std::string& robot_path, const std::st
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  CLI::App app{"Mecanum wheel odometry: WHEEL_ENCODERS -> ODOMETRY"};
-  std::string lcm_url, robot_path = "deploy/config/robot.json", config_path;
-  bool verbose = false;
-  app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
-  app.add_option("--robot", robot_path, "robot geometry file (JSON)")->capture_default_str();
-  app.add_option("--config", config_path, "service config file (JSON); defaults when omitted");
-  app.add_flag("-v,--verbose", verbose, "debug log lines");
-  CLI11_PARSE(app, argc, argv);
-  return refloc::guarded_main("mecanum_odometry", [&] {
-    refloc::setup_logging("mecanum_odometry", verbose);
-    return refloc::run(lcm_url, robot_path, config_path);
-  });
+  refloc::ServiceCommandLine cli("mecanum_odometry", "Mecanum wheel odometry: WHEEL_ENCODERS -> ODOMETRY", "");
+  cli.add_robot_option("robot geometry file (JSON)");
+  return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.robot_path, cli.config_path); });
 }

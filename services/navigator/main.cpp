@@ -3,13 +3,12 @@
 // and at the status rate.
 
 #include "common/clock.hpp"
-#include "common/guarded_main.hpp"
+#include "common/service_command_line.hpp"
 #include "common/json_config.hpp"
 #include "common/service_runtime.hpp"
 #include "navigator/navigator.hpp"
 #include "navigator/navigator_config_file.hpp"
 
-#include <CLI/CLI.hpp>
 #include <refloc/nav_goal_t.hpp>
 #include <refloc/nav_status_t.hpp>
 #include <refloc/pose2d_t.hpp>
@@ -116,15 +115,7 @@ int run(const std::string& lcm_url, const std::string& config_path) {
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  CLI::App app{"Holonomic waypoint navigator: NAV_GOAL + POSE -> CMD_VEL, NAV_STATUS"};
-  std::string lcm_url, config_path;
-  bool verbose = false;
-  app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
-  app.add_option("--config", config_path, "service config file (JSON); defaults when omitted");
-  app.add_flag("-v,--verbose", verbose, "debug log lines");
-  CLI11_PARSE(app, argc, argv);
-  return refloc::guarded_main("navigator", [&] {
-    refloc::setup_logging("navigator", verbose);
-    return refloc::run(lcm_url, config_path);
-  });
+  refloc::ServiceCommandLine cli("navigator", "Holonomic waypoint navigator: NAV_GOAL + POSE -> CMD_VEL, NAV_STATUS",
+                                 "");
+  return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path); });
 }

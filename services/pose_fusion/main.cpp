@@ -2,7 +2,8 @@
 // one output per odometry message.
 
 #include "common/clock.hpp"
-#include "common/guarded_main.hpp"
+#include "common/lcm_conversions.hpp"
+#include "common/service_command_line.hpp"
 #include "common/json_config.hpp"
 #include "common/service_runtime.hpp"
 #include "pose_fusion/fusion_config_file.hpp"
@@ -10,7 +11,6 @@
 #include "pose_fusion/odometry_silence.hpp"
 #include "pose_fusion/pose_fusion.hpp"
 
-#include <CLI/CLI.hpp>
 #include <refloc/odometry_t.hpp>
 #include <refloc/pose2d_t.hpp>
 
@@ -42,9 +42,7 @@ std::optional<PoseFix> to_fix(const pose2d_t& msg) {
   }
   fix.utime = msg.utime;
   fix.map_T_robot = {msg.x, msg.y, msg.theta};
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) fix.covariance(r, c) = msg.covariance[3 * r + c];
-  }
+  fix.covariance = covariance_from_lcm(msg.covariance);
   if (!std::isfinite(msg.x) || !std::isfinite(msg.y) || !std::isfinite(msg.theta) ||
       !fix.covariance.allFinite() || fix.covariance.diagonal().minCoeff() <= 0.0) {
     return std::nullopt;
@@ -112,9 +110,7 @@ int run(const std::string& lcm_url, const std::string& config_path) {
     out.x = e.map_T_robot.x;
     out.y = e.map_T_robot.y;
     out.theta = e.map_T_robot.theta;
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) out.covariance[3 * r + c] = e.covariance(r, c);
-    }
+    covariance_to_lcm(e.covariance, out.covariance);
     out.status = to_status(status);
     out.reflectors_used = reflectors_used;
     out.residual = 0.0;
@@ -153,15 +149,7 @@ int run(const std::string& lcm_url, const std::string& config_path) {
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  CLI::App app{"EKF fusion of wheel odometry and delayed laser pose fixes: ODOMETRY + LASER_POSE -> POSE"};
-  std::string lcm_url, config_path;
-  bool verbose = false;
-  app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
-  app.add_option("--config", config_path, "service config file (JSON); defaults when omitted");
-  app.add_flag("-v,--verbose", verbose, "debug log lines");
-  CLI11_PARSE(app, argc, argv);
-  return refloc::guarded_main("pose_fusion", [&] {
-    refloc::setup_logging("pose_fusion", verbose);
-    return refloc::run(lcm_url, config_path);
-  });
+  refloc::ServiceCommandLine cli(
+      "pose_fusion", "EKF fusion of wheel odometry and delayed laser pose fixes: ODOMETRY + LASER_POSE -> POSE", "");
+  return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path); });
 }

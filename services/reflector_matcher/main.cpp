@@ -5,14 +5,13 @@
 #include "reflector_matcher/reflector_matcher.hpp"
 #include "reflector_matcher/startup_relocalization.hpp"
 
-#include "common/guarded_main.hpp"
+#include "common/service_command_line.hpp"
 #include "common/lcm_conversions.hpp"
 #include "common/json_config.hpp"
 #include "common/reflector_map.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_runtime.hpp"
 
-#include <CLI/CLI.hpp>
 #include <refloc/pose2d_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
@@ -28,9 +27,7 @@ namespace {
 /// map_T_laser prior (with covariance) from a fused map_T_robot.
 PosePrior prior_from_robot_pose(const pose2d_t& pose, const Pose2& robot_T_laser) {
   const Pose2 map_T_robot{pose.x, pose.y, pose.theta};
-  Eigen::Matrix3d robot_cov;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) robot_cov(r, c) = pose.covariance[3 * r + c];
+  Eigen::Matrix3d robot_cov = covariance_from_lcm(pose.covariance);
   if (!robot_cov.allFinite()) robot_cov.setZero();  // the matcher's floors take over
   // d(map_T_laser)/d(map_T_robot): the mount lever arm turns heading error into position error.
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
@@ -141,18 +138,11 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  CLI::App app{"Reflector matcher: REFLECTORS (+ POSE prior) -> REFLECTOR_MATCHES"};
-  std::string lcm_url, config_path = "deploy/config/reflector_matcher.json", robot_path = "deploy/config/robot.json";
+  refloc::ServiceCommandLine cli("reflector_matcher", "Reflector matcher: REFLECTORS (+ POSE prior) -> REFLECTOR_MATCHES",
+                                 "deploy/config/reflector_matcher.json");
+  cli.add_robot_option("robot geometry file with /laser_mount (JSON)");
   std::string map_override;
-  bool verbose = false;
-  app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
-  app.add_option("--config", config_path, "service config file (JSON); empty for defaults")->capture_default_str();
-  app.add_option("--robot", robot_path, "robot geometry file with /laser_mount (JSON)")->capture_default_str();
-  app.add_option("--map", map_override, "reflector map file, overrides the config's map_file");
-  app.add_flag("-v,--verbose", verbose, "debug log lines");
-  CLI11_PARSE(app, argc, argv);
-  return refloc::guarded_main("reflector_matcher", [&] {
-    refloc::setup_logging("reflector_matcher", verbose);
-    return refloc::run(lcm_url, config_path, robot_path, map_override);
-  });
+  cli.app.add_option("--map", map_override, "reflector map file, overrides the config's map_file");
+  return cli.run(argc, argv,
+                 [&] { return refloc::run(cli.lcm_url, cli.config_path, cli.robot_path, map_override); });
 }

@@ -4,7 +4,7 @@
 // TCP that renders the world from the laser's true, moving pose beam by beam.
 
 #include "common/clock.hpp"
-#include "common/guarded_main.hpp"
+#include "common/service_command_line.hpp"
 #include "common/json_config.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_runtime.hpp"
@@ -38,7 +38,6 @@ struct Options {
   bool no_laser = false;
   int port = -1;
   std::string sensor_bind_address;  ///< overrides /emulator/bind_address
-  bool verbose = false;
 };
 
 struct SimSetup {
@@ -158,21 +157,21 @@ int run(const Options& o) {
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  CLI::App app{"Simulated Mecanum robot: CMD_VEL -> WHEEL_ENCODERS, GROUND_TRUTH, emulated LMS100 on TCP"};
+  refloc::ServiceCommandLine cli(
+      "robot_sim", "Simulated Mecanum robot: CMD_VEL -> WHEEL_ENCODERS, GROUND_TRUTH, emulated LMS100 on TCP", "");
+  cli.add_robot_option("robot geometry file (JSON)");
   refloc::Options o;
-  app.add_option("--lcm-url", o.lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
-  app.add_option("--robot", o.robot_path, "robot geometry file (JSON)")->capture_default_str();
-  app.add_option("--config", o.config_path, "simulation config (JSON, deploy/config/robot_sim.json)");
+  auto& app = cli.app;
   app.add_option("--world", o.world_path, "world file for the emulated LMS100 (overrides world_file)");
   app.add_option("--port", o.port, "LMS100 TCP port (0 = any free port)")->check(CLI::Range(0, 65535));
   app.add_option("--sensor-bind-address", o.sensor_bind_address,
                  "address the LMS100 emulator listens on (default 127.0.0.1; the computer's LAN address "
                  "when lms100_driver runs on another computer)");
   app.add_flag("--no-laser", o.no_laser, "run without the emulated LMS100");
-  app.add_flag("-v,--verbose", o.verbose, "debug log lines");
-  CLI11_PARSE(app, argc, argv);
-  return refloc::guarded_main("robot_sim", [&] {
-    refloc::setup_logging("robot_sim", o.verbose);
+  return cli.run(argc, argv, [&] {
+    o.lcm_url = cli.lcm_url;
+    o.robot_path = cli.robot_path;
+    o.config_path = cli.config_path;
     return refloc::run(o);
   });
 }
