@@ -11,11 +11,12 @@
 # plant, which no real robot does), and lcm-logger records the log we measure.
 # supervisord restarts a dead program only when its main loop wakes up: poll()
 # with a 1 s timeout, and SIGCHLD does not interrupt it (Python retries EINTR).
-# On a quiet stack that adds 1-2 s to every restart (measured: spawn 1.0-2.0 s
-# after the kill). A monitor talking to supervisord wakes it; so does this test,
-# through the control socket with curl during each restart, so the gap measured
-# is the stack's own. Under systemd (deploy/systemd) it is RestartSec=0.5 instead.
-# REFLOC_RESTART_NO_POKE=1 leaves supervisord alone (expect pose_fusion to fail the 1 s).
+# On a quiet stack that added 1-2 s to every restart (measured: spawn 1.0-2.0 s
+# after the kill); deploy/supervisord.conf now runs supervisor-tick, whose output
+# wakes the loop every 50 ms, and this test measures exactly what a field
+# installation gets. Under systemd (deploy/systemd) it is RestartSec=0.5 instead.
+# REFLOC_RESTART_POKE=1 also wakes supervisord through its control socket with
+# curl during each restart (the test's earlier work-around, kept for comparison).
 set -euo pipefail
 repo="$1"
 build="$2"
@@ -52,7 +53,7 @@ now_us() { date +%s%6N; }
 # Wake supervisord's main loop every 20 ms for 2 s (see above); no curl: no waking.
 poke_supervisord() {
   command -v curl >/dev/null || return 0
-  [ "${REFLOC_RESTART_NO_POKE:-0}" = 1 ] && return 0
+  [ "${REFLOC_RESTART_POKE:-0}" = 1 ] || return 0
   local i
   for i in $(seq 100); do
     curl -s -o /dev/null --max-time 1 --unix-socket "$REFLOC_RUN_DIR/supervisor.sock" -H 'Content-Type: text/xml' \
