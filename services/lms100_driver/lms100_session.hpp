@@ -31,7 +31,10 @@ struct Lms100SessionConfig {
   double ready_timeout_s = 120.0;       ///< STlms must reach 7 within this [s] (real: 30-45 s after a change)
   double status_poll_period_s = 0.5;    ///< [s]
   double first_scan_timeout_s = 2.0;    ///< after sEA LMDscandata 1 [s]
-  double scan_timeout_periods = 3.0;    ///< no scan for this many scan periods → reconnect
+  /// No scan for this many scan periods → reconnect. 10 (200 ms at 50 Hz): a dead link is
+  /// still noticed at once, but a host starved of CPU for a few periods (3 did that under
+  /// load, costing 28 scans per needless reconnect) keeps its connection.
+  double scan_timeout_periods = 10.0;
   double backoff_initial_s = 0.5;       ///< [s]
   double backoff_max_s = 5.0;           ///< [s]
   double stop_reply_timeout_s = 0.5;    ///< for the polite sEN 0 / LMCstopmeas on stop [s]
