@@ -98,7 +98,6 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   result.matches.clear();
   result.hypothesis_score = 0.0;
   result.runner_up_score = 0.0;
-  result.missed = 0;
   result.ndetections = static_cast<int>(detections.size());
   scored_.clear();
   best_associations_.clear();
@@ -108,7 +107,6 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   remove_duplicate_hypotheses();
   double best_score = -1e300;
   int best_matched = 0;
-  int best_missed = 0;
   Pose2 best_pose;
   for (const Pose2& h : hypotheses_) {
     const Verification v = verifier_.verify(h, detections);
@@ -116,7 +114,6 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
     if (v.score > best_score) {
       best_score = v.score;
       best_matched = v.matched;
-      best_missed = v.missed;
       best_pose = v.map_T_laser;
       best_associations_ = verifier_.associations();
     }
@@ -137,7 +134,6 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   }
   result.map_T_laser = best_pose;
   result.hypothesis_score = best_score;
-  result.missed = best_missed;
   result.runner_up_score = scored_.size() > 1 && runner_up > -1e300 ? runner_up : 0.0;
   // Most detections of a real scan are reflectors: a pose that explains few of them is a
   // chance alignment (or the map has changed), not a fix.

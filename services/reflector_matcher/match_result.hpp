@@ -28,7 +28,6 @@ struct MatchResult {
   std::vector<ReflectorMatch> matches;
   double hypothesis_score = 0.0;  ///< support of the chosen hypothesis (matched minus penalties)
   double runner_up_score = 0.0;   ///< best hypothesis that is a substantially different pose
-  int missed = 0;                 ///< reflectors the hypothesis expects in view, unshadowed, not seen
   Pose2 map_T_laser;              ///< hypothesis the matches were verified against
   int ndetections = 0;
 };

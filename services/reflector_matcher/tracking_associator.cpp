@@ -20,7 +20,6 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
   result.matches.clear();
   result.hypothesis_score = 0.0;
   result.runner_up_score = 0.0;
-  result.missed = 0;
   result.map_T_laser = prior.map_T_laser;
   result.ndetections = static_cast<int>(detections.size());
 
@@ -87,7 +86,6 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
   }
   final_fit.solve(result.map_T_laser);
   result.hypothesis_score = v.score;
-  result.missed = v.missed;
   result.status = MatchStatus::kOk;
   return true;
 }
