@@ -107,7 +107,7 @@ class MissionMonitor {
     drive_start_utime_ = now_utime();
     fmt::print("localized; sending a mission with {} waypoints\n", mission_.waypoints.size());
     const int64_t drive_start = monotonic_us();
-    while (!finished_ && !rt_.stop_requested()) {
+    while (!progress_.finished() && !rt_.stop_requested()) {
       // Resend until the navigator acknowledges (UDP has no last value for late
       // joiners), and the remaining waypoints whenever a restarted navigator forgot them.
       if (progress_.needs_send(monotonic_us())) send_goal();
@@ -211,19 +211,17 @@ class MissionMonitor {
     if (!driving_) return;
     const int64_t now = monotonic_us();
     const size_t newly = progress_.on_status(m.goal_id, static_cast<NavStatusState>(m.state), m.waypoints_reached, now);
-    for (size_t k = 0; k < newly; ++k) {
-      auto& r = results_[reached_];
+    for (size_t i = progress_.reached() - newly; i < progress_.reached(); ++i) {
+      auto& r = results_[i];
       r.reached = true;
       if (has_truth_) {
         r.error_xy_m = std::hypot(latest_truth_.x - r.target.x, latest_truth_.y - r.target.y);
         r.error_heading_rad = angle_diff(latest_truth_.theta, r.target.theta);
       }
-      fmt::print("waypoint {} reached: true error {:.1f} mm, {:.2f} deg\n", reached_, r.error_xy_m * 1000.0,
+      fmt::print("waypoint {} reached: true error {:.1f} mm, {:.2f} deg\n", i, r.error_xy_m * 1000.0,
                  r.error_heading_rad * 180.0 / M_PI);
-      ++reached_;
     }
     if (progress_.aborted() && abort_reason_.empty()) abort_reason_ = "navigator aborted: " + m.reason;
-    finished_ = progress_.finished();
   }
 
   /// Odometry alone, anchored to the truth at the first odometry sample of the run.
@@ -250,8 +248,6 @@ class MissionMonitor {
   MissionProgress progress_;
   double last_odometry_distance_ = 0.0;
   int odometry_restarts_ = 0;
-  bool finished_ = false;
-  size_t reached_ = 0;
   int64_t drive_start_utime_ = 0;
   int64_t drive_end_utime_ = 0;
   std::string abort_reason_;
