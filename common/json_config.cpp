@@ -65,8 +65,8 @@ bool JsonConfig::has(const std::string& pointer) const { return find(pointer) !=
 
 void JsonConfig::mark_used(const std::string& pointer) const { used_.insert(pointer); }
 
-double JsonConfig::checked_number(const std::string& pointer, const nlohmann::json& value,
-                                  double min, double max) const {
+double JsonConfig::checked_number(const std::string& pointer, const nlohmann::json& value, double min,
+                                  double max) const {
   if (!value.is_number()) {
     fail(pointer, fmt::format("expected a number{}, got {}", range_text(min, max), describe(value)));
   }
@@ -77,8 +77,8 @@ double JsonConfig::checked_number(const std::string& pointer, const nlohmann::js
   return v;
 }
 
-long long JsonConfig::checked_integer(const std::string& pointer, const nlohmann::json& value,
-                                      long long min, long long max) const {
+long long JsonConfig::checked_integer(const std::string& pointer, const nlohmann::json& value, long long min,
+                                      long long max) const {
   if (!value.is_number_integer()) {
     fail(pointer, fmt::format("expected an integer in [{}, {}], got {}", min, max, describe(value)));
   }
@@ -89,8 +89,7 @@ long long JsonConfig::checked_integer(const std::string& pointer, const nlohmann
   return v;
 }
 
-double JsonConfig::number(const std::string& pointer, double default_value, double min,
-                          double max) const {
+double JsonConfig::number(const std::string& pointer, double default_value, double min, double max) const {
   mark_used(pointer);
   const nlohmann::json* value = find(pointer);
   return value ? checked_number(pointer, *value, min, max) : default_value;
@@ -110,8 +109,7 @@ long long JsonConfig::integer(const std::string& pointer, long long default_valu
   return value ? checked_integer(pointer, *value, min, max) : default_value;
 }
 
-long long JsonConfig::required_integer(const std::string& pointer, long long min,
-                                       long long max) const {
+long long JsonConfig::required_integer(const std::string& pointer, long long min, long long max) const {
   mark_used(pointer);
   const nlohmann::json* value = find(pointer);
   if (!value) fail(pointer, fmt::format("missing; expected an integer in [{}, {}]", min, max));
@@ -164,23 +162,25 @@ const nlohmann::json& JsonConfig::subtree(const std::string& pointer) const {
 }
 
 void JsonConfig::reject_unknown_keys() const {
-  std::function<void(const nlohmann::json&, const std::string&)> walk =
-      [&](const nlohmann::json& node, const std::string& pointer) {
-        if (used_whole_.count(pointer)) return;
-        if (node.is_object()) {
-          for (auto it = node.begin(); it != node.end(); ++it) {
-            std::string key = it.key();
-            // RFC 6901 escaping, so the message names the key as a valid pointer.
-            for (size_t pos = 0; (pos = key.find('~', pos)) != std::string::npos; pos += 2) key.replace(pos, 1, "~0");
-            for (size_t pos = 0; (pos = key.find('/', pos)) != std::string::npos; pos += 2) key.replace(pos, 1, "~1");
-            walk(it.value(), pointer + "/" + key);
-          }
-        } else if (node.is_array()) {
-          for (size_t i = 0; i < node.size(); ++i) walk(node[i], pointer + "/" + std::to_string(i));
-        } else if (!used_.count(pointer)) {
-          fail(pointer, "unknown key (misspelt, or not used by this program)");
-        }
-      };
+  std::function<void(const nlohmann::json&, const std::string&)> walk = [&](const nlohmann::json& node,
+                                                                            const std::string& pointer) {
+    if (used_whole_.count(pointer)) return;
+    if (node.is_object()) {
+      for (auto it = node.begin(); it != node.end(); ++it) {
+        std::string key = it.key();
+        // RFC 6901 escaping, so the message names the key as a valid pointer.
+        for (size_t pos = 0; (pos = key.find('~', pos)) != std::string::npos; pos += 2)
+          key.replace(pos, 1, "~0");
+        for (size_t pos = 0; (pos = key.find('/', pos)) != std::string::npos; pos += 2)
+          key.replace(pos, 1, "~1");
+        walk(it.value(), pointer + "/" + key);
+      }
+    } else if (node.is_array()) {
+      for (size_t i = 0; i < node.size(); ++i) walk(node[i], pointer + "/" + std::to_string(i));
+    } else if (!used_.count(pointer)) {
+      fail(pointer, "unknown key (misspelt, or not used by this program)");
+    }
+  };
   walk(document_, "");
 }
 

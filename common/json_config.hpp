@@ -34,8 +34,7 @@ class JsonConfig {
                 double min = -std::numeric_limits<double>::max(),
                 double max = std::numeric_limits<double>::max()) const;
   /// Required finite number in [min, max].
-  double required_number(const std::string& pointer,
-                         double min = -std::numeric_limits<double>::max(),
+  double required_number(const std::string& pointer, double min = -std::numeric_limits<double>::max(),
                          double max = std::numeric_limits<double>::max()) const;
   long long integer(const std::string& pointer, long long default_value,
                     long long min = std::numeric_limits<long long>::min(),
@@ -66,8 +65,8 @@ class JsonConfig {
   void mark_used(const std::string& pointer) const;
   double checked_number(const std::string& pointer, const nlohmann::json& value, double min,
                         double max) const;
-  long long checked_integer(const std::string& pointer, const nlohmann::json& value,
-                            long long min, long long max) const;
+  long long checked_integer(const std::string& pointer, const nlohmann::json& value, long long min,
+                            long long max) const;
 
   nlohmann::json document_;
   std::string source_;

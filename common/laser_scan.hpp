@@ -14,25 +14,25 @@
 namespace refloc {
 
 struct LaserScan {
-  int64_t utime = 0;              ///< host time of the first beam [us]
-  int64_t receive_utime = 0;      ///< host time the telegram was complete [us]
-  int64_t sensor_start_us = 0;    ///< sensor clock at the first beam, unwrapped [us]
-  int64_t sensor_transmit_us = 0; ///< sensor clock at transmission, unwrapped [us]
+  int64_t utime = 0;               ///< host time of the first beam [us]
+  int64_t receive_utime = 0;       ///< host time the telegram was complete [us]
+  int64_t sensor_start_us = 0;     ///< sensor clock at the first beam, unwrapped [us]
+  int64_t sensor_transmit_us = 0;  ///< sensor clock at transmission, unwrapped [us]
   uint32_t scan_counter = 0;
   uint32_t telegram_counter = 0;
   uint32_t device_status = 0;
   uint32_t serial_number = 0;
 
-  double start_angle = 0.0;       ///< angle of beam 0 [rad]
-  double angle_increment = 0.0;   ///< [rad]
-  double time_increment = 0.0;    ///< time between beams [s]
-  double scan_period = 0.0;       ///< time between scans [s]
-  double range_min = 0.05;        ///< [m]; smaller ranges are not echoes
-  double range_max = 20.0;        ///< [m]
+  double start_angle = 0.0;      ///< angle of beam 0 [rad]
+  double angle_increment = 0.0;  ///< [rad]
+  double time_increment = 0.0;   ///< time between beams [s]
+  double scan_period = 0.0;      ///< time between scans [s]
+  double range_min = 0.05;       ///< [m]; smaller ranges are not echoes
+  double range_max = 20.0;       ///< [m]
 
-  std::vector<float> ranges;      ///< [m]; 0 = no echo, 0.001 = dazzled (sensor codes 0 and 1)
-  std::vector<int32_t> rssi;      ///< as the sensor reports it; empty or ranges.size()
-  int rssi_bits = 0;              ///< 8 or 16; 0 without RSSI
+  std::vector<float> ranges;  ///< [m]; 0 = no echo, 0.001 = dazzled (sensor codes 0 and 1)
+  std::vector<int32_t> rssi;  ///< as the sensor reports it; empty or ranges.size()
+  int rssi_bits = 0;          ///< 8 or 16; 0 without RSSI
 
   /// Angle of beam i [rad].
   double beam_angle(size_t i) const { return start_angle + static_cast<double>(i) * angle_increment; }

@@ -30,7 +30,8 @@ ReflectorMap parse_reflector_map(const JsonConfig& config, const std::string& po
     const long long id = config.required_integer(item + "/id", 0, 1000000000);
     const auto [it, inserted] = first_index_of_id.emplace(id, i);
     if (!inserted) {
-      config.fail(item + "/id", fmt::format("duplicate reflector id {} (also at {}/{})", id, list, it->second));
+      config.fail(item + "/id",
+                  fmt::format("duplicate reflector id {} (also at {}/{})", id, list, it->second));
     }
     r.id = static_cast<int>(id);
     r.map_p_center.x() = config.required_number(item + "/x", -kMaxCoordinate_m, kMaxCoordinate_m);

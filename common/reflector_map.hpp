@@ -11,7 +11,7 @@ namespace refloc {
 struct MapReflector {
   int id = 0;
   Eigen::Vector2d map_p_center = Eigen::Vector2d::Zero();  ///< centre in the map frame [m]
-  double radius = 0.06;                                     ///< cylinder radius [m]
+  double radius = 0.06;                                    ///< cylinder radius [m]
 };
 
 struct ReflectorMap {

@@ -21,7 +21,7 @@ class ServiceCommandLine {
   /// Parses argv, sets up logging and runs body under guarded_main; returns the exit code.
   int run(int argc, char** argv, const std::function<int()>& body);
 
-  CLI::App app;  ///< for service-specific options
+  CLI::App app;         ///< for service-specific options
   std::string lcm_url;  ///< empty: $LCM_DEFAULT_URL, else udpm with ttl=0
   std::string config_path;
   std::string robot_path = "deploy/config/robot.json";

@@ -7,12 +7,12 @@
 #include <systemd/sd-daemon.h>
 #endif
 
+#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace refloc {
 namespace {
@@ -44,7 +44,8 @@ void notify_systemd(const char* state) {
 int64_t watchdog_half_period_us() {
 #ifdef REFLOC_HAVE_SYSTEMD
   uint64_t interval_us = 0;
-  if (sd_watchdog_enabled(0, &interval_us) > 0 && interval_us > 0) return static_cast<int64_t>(interval_us / 2);
+  if (sd_watchdog_enabled(0, &interval_us) > 0 && interval_us > 0)
+    return static_cast<int64_t>(interval_us / 2);
 #endif
   return 0;
 }
@@ -143,13 +144,16 @@ int ServiceRuntime::run() {
   watchdog_next_due_us_ = monotonic_us();
   notify_systemd("READY=1");
   // Fed from the loop itself: a handler that blocks stops the feeding, and systemd restarts us.
-  const int spin_ms = watchdog_period_us_ > 0 ? static_cast<int>(std::clamp<int64_t>(watchdog_period_us_ / 2000, 1, 100)) : 100;
+  const int spin_ms = watchdog_period_us_ > 0
+                          ? static_cast<int>(std::clamp<int64_t>(watchdog_period_us_ / 2000, 1, 100))
+                          : 100;
   while (!stop_requested()) {
     spin_once(spin_ms);
     feed_watchdog_if_due();
   }
   notify_systemd("STOPPING=1");
-  set_state(heartbeat_t::STATE_STOPPING, g_signal_received ? "signal " + std::to_string(g_signal_received) : "stop requested");
+  set_state(heartbeat_t::STATE_STOPPING,
+            g_signal_received ? "signal " + std::to_string(g_signal_received) : "stop requested");
   publish_heartbeat();
   spdlog::info("stopped: {} in, {} out, {} decode errors", messages_in_, messages_out_, decode_errors_);
   return 0;

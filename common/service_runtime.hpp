@@ -7,9 +7,9 @@
 
 #include "common/latency_window.hpp"
 
+#include <spdlog/spdlog.h>
 #include <lcm/lcm-cpp.hpp>
 #include <refloc/heartbeat_t.hpp>
-#include <spdlog/spdlog.h>
 
 #include <cstdint>
 #include <functional>
@@ -104,8 +104,7 @@ class ServiceRuntime {
 };
 
 template <class Message>
-void ServiceRuntime::subscribe(const std::string& channel,
-                               std::function<void(const Message&)> handler) {
+void ServiceRuntime::subscribe(const std::string& channel, std::function<void(const Message&)> handler) {
   auto sub = std::make_unique<RawSubscription>();
   sub->runtime = this;
   const std::string channel_name = channel;
@@ -113,8 +112,8 @@ void ServiceRuntime::subscribe(const std::string& channel,
     Message message;
     if (message.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) < 0) {
       ++decode_errors_;
-      spdlog::warn("{}: {} bytes that are not a {} (decode error {}), skipped", channel_name,
-                   rbuf->data_size, Message::getTypeName(), decode_errors_);
+      spdlog::warn("{}: {} bytes that are not a {} (decode error {}), skipped", channel_name, rbuf->data_size,
+                   Message::getTypeName(), decode_errors_);
       return;
     }
     ++messages_in_;
@@ -130,7 +129,8 @@ template <class Message>
 bool ServiceRuntime::publish(const std::string& channel, const Message& message) {
   const int size = message.getEncodedSize();
   std::vector<uint8_t> buffer(static_cast<size_t>(size));
-  if (message.encode(buffer.data(), 0, size) < 0 || lcm_->publish(channel, buffer.data(), static_cast<unsigned>(size)) != 0) {
+  if (message.encode(buffer.data(), 0, size) < 0 ||
+      lcm_->publish(channel, buffer.data(), static_cast<unsigned>(size)) != 0) {
     spdlog::error("{}: publishing a {} failed", channel, Message::getTypeName());
     return false;
   }

@@ -26,11 +26,11 @@ struct Lms100SessionConfig {
   ScanConfig scan;  ///< sent with mLMPsetscancfg when set_scan_config
   bool set_scan_config = true;
   ScanDataOutputConfig output;
-  double connect_timeout_s = 2.0;       ///< [s]
-  double reply_timeout_s = 3.0;         ///< per command [s]
-  double ready_timeout_s = 120.0;       ///< STlms must reach 7 within this [s] (real: 30-45 s after a change)
-  double status_poll_period_s = 0.5;    ///< [s]
-  double first_scan_timeout_s = 2.0;    ///< after sEA LMDscandata 1 [s]
+  double connect_timeout_s = 2.0;     ///< [s]
+  double reply_timeout_s = 3.0;       ///< per command [s]
+  double ready_timeout_s = 120.0;     ///< STlms must reach 7 within this [s] (real: 30-45 s after a change)
+  double status_poll_period_s = 0.5;  ///< [s]
+  double first_scan_timeout_s = 2.0;  ///< after sEA LMDscandata 1 [s]
   /// No scan for this many scan periods → reconnect. 10 (200 ms at 50 Hz): a dead link is
   /// still noticed at once, but a host starved of CPU for a few periods (3 did that under
   /// load, costing 28 scans per needless reconnect) keeps its connection.

@@ -14,9 +14,9 @@
 #include <string>
 
 #include "common/clock.hpp"
-#include "common/service_command_line.hpp"
 #include "common/json_config.hpp"
 #include "common/lcm_conversions.hpp"
+#include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
 #include "lms100_driver/driver_config_file.hpp"
 #include "lms100_driver/lms100_session.hpp"

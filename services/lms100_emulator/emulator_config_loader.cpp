@@ -21,8 +21,10 @@ Lms100EmulatorConfig parse_emulator_config(const JsonConfig& c) {
 
   Lms100DeviceConfig& d = out.device;
   const double frequency_hz = c.number("/scan_frequency_hz", d.scan_frequency_1e2hz / 100.0, 25.0, 50.0);
-  if (frequency_hz != 25.0 && frequency_hz != 50.0) c.fail("/scan_frequency_hz", "an LMS100 scans at 25 or 50 Hz");
-  const double resolution_deg = c.number("/angular_resolution_deg", d.angular_resolution_1e4deg / 1e4, 0.25, 0.5);
+  if (frequency_hz != 25.0 && frequency_hz != 50.0)
+    c.fail("/scan_frequency_hz", "an LMS100 scans at 25 or 50 Hz");
+  const double resolution_deg =
+      c.number("/angular_resolution_deg", d.angular_resolution_1e4deg / 1e4, 0.25, 0.5);
   if (resolution_deg != 0.25 && resolution_deg != 0.5) {
     c.fail("/angular_resolution_deg", "an LMS100 resolves 0.25 or 0.5 deg");
   }
@@ -58,7 +60,8 @@ Lms100EmulatorConfig parse_emulator_config(const JsonConfig& c) {
   f.split_pieces = static_cast<int>(c.integer("/faults/split_pieces", f.split_pieces, 2, 64));
   f.split_gap_ms = static_cast<int>(c.integer("/faults/split_gap_ms", f.split_gap_ms, 0, 100));
   f.merge_scan_telegrams = static_cast<int>(c.integer("/faults/merge_scan_telegrams", 1, 1, 50));
-  f.junk_bytes_between_telegrams = static_cast<int>(c.integer("/faults/junk_bytes_between_telegrams", 0, 0, 10000));
+  f.junk_bytes_between_telegrams =
+      static_cast<int>(c.integer("/faults/junk_bytes_between_telegrams", 0, 0, 10000));
   f.duplicate_replies = c.boolean("/faults/duplicate_replies", false);
   f.refuse_readiness = c.boolean("/faults/refuse_readiness", false);
   return out;

@@ -31,9 +31,9 @@ std::string describe(const FaultSettings& s) {
   const char* split = s.split_mode == WriteSplitMode::none     ? "none"
                       : s.split_mode == WriteSplitMode::random ? "random"
                                                                : "boundaries";
-  out << "split " << split << ", merge " << s.merge_scan_telegrams << ", junk " << s.junk_bytes_between_telegrams
-      << ", duplicate " << (s.duplicate_replies ? "on" : "off") << ", ready "
-      << (s.refuse_readiness ? "off" : "on");
+  out << "split " << split << ", merge " << s.merge_scan_telegrams << ", junk "
+      << s.junk_bytes_between_telegrams << ", duplicate " << (s.duplicate_replies ? "on" : "off")
+      << ", ready " << (s.refuse_readiness ? "off" : "on");
   return out.str();
 }
 
@@ -82,9 +82,10 @@ bool apply_fault_command(const std::string& line, FaultInjector& faults, std::st
     ok = false;
   }
   if (!ok) {
-    message = "unknown or malformed command '" + line +
-              "' (drop N | stall MS | close | reset | refuse-write | ready on|off | split none|random|boundaries"
-              " | merge N | junk N | duplicate on|off | status)";
+    message =
+        "unknown or malformed command '" + line +
+        "' (drop N | stall MS | close | reset | refuse-write | ready on|off | split none|random|boundaries"
+        " | merge N | junk N | duplicate on|off | status)";
     return false;
   }
   message = "ok: " + describe(faults.settings());

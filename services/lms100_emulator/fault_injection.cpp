@@ -5,7 +5,8 @@
 
 namespace refloc {
 
-void plan_write_cuts(size_t size, const FaultSettings& settings, std::mt19937& rng, std::vector<size_t>& cuts) {
+void plan_write_cuts(size_t size, const FaultSettings& settings, std::mt19937& rng,
+                     std::vector<size_t>& cuts) {
   cuts.clear();
   if (size < 2) return;
   if (settings.split_mode == WriteSplitMode::boundaries) {

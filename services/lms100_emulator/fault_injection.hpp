@@ -22,16 +22,17 @@ enum class WriteSplitMode {
 /// Standing fault settings (they apply until changed).
 struct FaultSettings {
   WriteSplitMode split_mode = WriteSplitMode::none;
-  int split_pieces = 3;               ///< writes per frame in random mode (>= 2)
-  int split_gap_ms = 2;               ///< pause between the pieces so they arrive in separate reads [ms]
-  int merge_scan_telegrams = 1;       ///< > 1: this many scan telegrams go out in one write
+  int split_pieces = 3;                  ///< writes per frame in random mode (>= 2)
+  int split_gap_ms = 2;                  ///< pause between the pieces so they arrive in separate reads [ms]
+  int merge_scan_telegrams = 1;          ///< > 1: this many scan telegrams go out in one write
   int junk_bytes_between_telegrams = 0;  ///< junk (never STX) written before each frame
-  bool duplicate_replies = false;     ///< every command reply is sent twice
-  bool refuse_readiness = false;      ///< STlms stays below 7, no scans are made
+  bool duplicate_replies = false;        ///< every command reply is sent twice
+  bool refuse_readiness = false;         ///< STlms stays below 7, no scans are made
 };
 
 /// Cut positions (strictly inside (0, size)) for one write of size bytes.
-void plan_write_cuts(size_t size, const FaultSettings& settings, std::mt19937& rng, std::vector<size_t>& cuts);
+void plan_write_cuts(size_t size, const FaultSettings& settings, std::mt19937& rng,
+                     std::vector<size_t>& cuts);
 /// Appends count junk bytes: any byte but STX, so no frame can start inside them.
 void append_junk_bytes(size_t count, std::mt19937& rng, std::string& out);
 

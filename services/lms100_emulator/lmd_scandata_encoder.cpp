@@ -29,8 +29,8 @@ void append_field(std::string& out, uint32_t value) {
   append_cola_hex(out, value);
 }
 
-void append_channel(std::string& out, const char* name, const LmdBeamLayout& layout,
-                    const uint16_t* values, size_t count, uint16_t max_value) {
+void append_channel(std::string& out, const char* name, const LmdBeamLayout& layout, const uint16_t* values,
+                    size_t count, uint16_t max_value) {
   out.push_back(' ');
   out.append(name);
   out.push_back(' ');

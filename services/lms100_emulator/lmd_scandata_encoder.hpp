@@ -20,25 +20,25 @@ LmdCalendarTime calendar_time_from_epoch_us(uint64_t us_since_epoch);
 
 /// Every header field before the channel blocks, in the sensor's own units.
 struct LmdTelegramHeader {
-  bool is_stream_event = true;           ///< "sSN" (stream) or "sRA" (poll reply)
+  bool is_stream_event = true;  ///< "sSN" (stream) or "sRA" (poll reply)
   uint32_t version = 1;
   uint32_t device_number = 1;
   uint32_t serial_number = 0x8D4C04;
-  uint32_t device_status[2] = {0, 0};    ///< "0 0" OK; the first scans after start can be "1 0"
+  uint32_t device_status[2] = {0, 0};  ///< "0 0" OK; the first scans after start can be "1 0"
   uint16_t telegram_counter = 0;
   uint16_t scan_counter = 0;
   uint32_t time_since_startup_us = 0;    ///< device clock at beam 0 (wraps)
   uint32_t time_of_transmission_us = 0;  ///< device clock when sent (wraps)
   uint32_t digital_inputs[2] = {0, 0};
-  uint32_t digital_outputs[2] = {7, 0};  ///< real ASCII LMS111 telegrams show "7 0"
-  uint32_t reserved = 0;                 ///< layer angle on other models, 0 on LMS1xx
-  uint32_t scan_frequency_1e2hz = 5000;  ///< 5000 = 50 Hz, 2500 = 25 Hz
+  uint32_t digital_outputs[2] = {7, 0};        ///< real ASCII LMS111 telegrams show "7 0"
+  uint32_t reserved = 0;                       ///< layer angle on other models, 0 on LMS1xx
+  uint32_t scan_frequency_1e2hz = 5000;        ///< 5000 = 50 Hz, 2500 = 25 Hz
   uint32_t measurement_frequency_100hz = 360;  ///< 360 -> 36 kHz beam rate
 };
 
 /// Which optional parts follow the DIST1 channel (sWN LMDscandatacfg, §2.2).
 struct LmdOutputOptions {
-  int rssi_bits = 16;        ///< 16: RSSI1 in the 16-bit block; 8: in the 8-bit block; 0: none
+  int rssi_bits = 16;  ///< 16: RSSI1 in the 16-bit block; 8: in the 8-bit block; 0: none
   bool send_device_name = false;
   std::string device_name = "LMS100";
   bool send_comment = false;

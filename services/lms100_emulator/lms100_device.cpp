@@ -75,7 +75,9 @@ Lms100Device::Lms100Device(const Lms100DeviceConfig& config)
 }
 
 int Lms100Device::full_scan_beams() const {
-  return static_cast<int>((scan_stop_1e4deg_ - scan_start_1e4deg_) / static_cast<int32_t>(resolution_1e4deg_)) + 1;
+  return static_cast<int>((scan_stop_1e4deg_ - scan_start_1e4deg_) /
+                          static_cast<int32_t>(resolution_1e4deg_)) +
+         1;
 }
 
 OutputBeams Lms100Device::output_beams() const {
@@ -97,7 +99,8 @@ void Lms100Device::on_client_disconnected() {
   stream_enabled_ = false;
 }
 
-Lms100Device::Action Lms100Device::handle_request(std::string_view payload, uint64_t now_us, std::string& reply) {
+Lms100Device::Action Lms100Device::handle_request(std::string_view payload, uint64_t now_us,
+                                                  std::string& reply) {
   reply.clear();
   Action action = Action::reply;
   if (!is_printable_cola_text(payload)) {
@@ -124,7 +127,8 @@ Lms100Device::Action Lms100Device::handle_request(std::string_view payload, uint
   return action;
 }
 
-void Lms100Device::handle_method(const std::vector<std::string_view>& t, uint64_t now_us, std::string& reply) {
+void Lms100Device::handle_method(const std::vector<std::string_view>& t, uint64_t now_us,
+                                 std::string& reply) {
   const std::string_view name = t[1];
   if (name == "SetAccessMode") {
     set_access_mode(t, reply);
@@ -176,7 +180,8 @@ void Lms100Device::set_access_mode(const std::vector<std::string_view>& t, std::
   reply = ok ? "sAN SetAccessMode 1" : "sAN SetAccessMode 0";
 }
 
-void Lms100Device::set_scan_config(const std::vector<std::string_view>& t, uint64_t now_us, std::string& reply) {
+void Lms100Device::set_scan_config(const std::vector<std::string_view>& t, uint64_t now_us,
+                                   std::string& reply) {
   if (!expect_arguments(t, 5, reply)) return;
   int64_t v[5];
   if (!read_numbers(t, 2, 5, v, reply)) return;
@@ -285,8 +290,9 @@ void Lms100Device::append_status(uint64_t now_us, std::string& reply) const {
   // Real: "sRA STlms 3 0 8 00:17:28 A 01.01.1970 0 0 0"; the clock is the unset RTC (uptime).
   const LmdCalendarTime rtc = calendar_time_from_epoch_us(now_us);
   char text[64];
-  std::snprintf(text, sizeof(text), "%d 0 8 %02u:%02u:%02u A %02u.%02u.%04u 0 0 0", scheduler_.status_code(now_us),
-                rtc.hour, rtc.minute, rtc.second, rtc.day, rtc.month, rtc.year);
+  std::snprintf(text, sizeof(text), "%d 0 8 %02u:%02u:%02u A %02u.%02u.%04u 0 0 0",
+                scheduler_.status_code(now_us), rtc.hour, rtc.minute, rtc.second, rtc.day, rtc.month,
+                rtc.year);
   reply += text;
 }
 
@@ -337,8 +343,9 @@ void Lms100Device::write_data_config(const std::vector<std::string_view>& t, std
   int64_t v[12];
   if (!read_numbers(t, 2, 12, v, reply)) return;
   // Only the first echo and no encoder are emulated: other values are refused, not silently ignored.
-  const bool ok = v[0] == 1 && v[1] == 0 && is_flag(v[2]) && is_flag(v[3]) && v[4] == 0 && v[5] == 0 && v[6] == 0 &&
-                  is_flag(v[7]) && is_flag(v[8]) && is_flag(v[9]) && is_flag(v[10]) && v[11] >= 1 && v[11] <= 50000;
+  const bool ok = v[0] == 1 && v[1] == 0 && is_flag(v[2]) && is_flag(v[3]) && v[4] == 0 && v[5] == 0 &&
+                  v[6] == 0 && is_flag(v[7]) && is_flag(v[8]) && is_flag(v[9]) && is_flag(v[10]) &&
+                  v[11] >= 1 && v[11] <= 50000;
   if (!ok) {
     error_reply(kErrInvalidData, reply);
     return;

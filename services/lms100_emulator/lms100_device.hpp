@@ -14,19 +14,19 @@
 namespace refloc {
 
 struct Lms100DeviceConfig {
-  uint32_t serial_number = 0x8D4C04;   ///< in every telegram (real LMS111 sample value)
-  std::string device_ident_name = "LMS10x_FieldEval";      ///< sRA DeviceIdent (real LMS100 reply)
+  uint32_t serial_number = 0x8D4C04;                   ///< in every telegram (real LMS111 sample value)
+  std::string device_ident_name = "LMS10x_FieldEval";  ///< sRA DeviceIdent (real LMS100 reply)
   std::string device_ident_version = "V1.36-21.10.2010";
-  std::string firmware_version = "V1.80.2";               ///< sRA FirmwareVersion
-  std::string location_name = "not defined";              ///< LocationName and the telegram's device name
-  uint32_t scan_frequency_1e2hz = 5000;      ///< at power-up: 5000 (50 Hz) or 2500 (25 Hz)
-  uint32_t angular_resolution_1e4deg = 5000; ///< at power-up: 5000 (0.5 deg) or 2500 (0.25 deg)
-  double spin_up_s = 0.2;                    ///< start of measurement to STlms 7 [s] (real: ~30 s)
-  bool measuring_at_power_up = true;         ///< a real LMS100 spins up by itself after power-on
+  std::string firmware_version = "V1.80.2";   ///< sRA FirmwareVersion
+  std::string location_name = "not defined";  ///< LocationName and the telegram's device name
+  uint32_t scan_frequency_1e2hz = 5000;       ///< at power-up: 5000 (50 Hz) or 2500 (25 Hz)
+  uint32_t angular_resolution_1e4deg = 5000;  ///< at power-up: 5000 (0.5 deg) or 2500 (0.25 deg)
+  double spin_up_s = 0.2;                     ///< start of measurement to STlms 7 [s] (real: ~30 s)
+  bool measuring_at_power_up = true;          ///< a real LMS100 spins up by itself after power-on
   /// LMS100/LMS151 report 0.5 deg in LMPoutputRange even while scanning at 0.25 deg
   /// (clearpath #51, PR #39); keep true to emulate that lie.
   bool output_range_reports_half_degree = true;
-  bool rssi_enabled = true;   ///< LMDscandatacfg at power-up (the stored setting)
+  bool rssi_enabled = true;  ///< LMDscandatacfg at power-up (the stored setting)
   bool rssi_16bit = true;
   bool time_info = false;
   uint16_t first_scan_counter = 0;
@@ -36,7 +36,7 @@ struct Lms100DeviceConfig {
 struct LmdDataConfig {
   bool rssi_enabled = true;
   bool rssi_16bit = true;
-  bool position = false;      ///< accepted, but the position block is always sent empty
+  bool position = false;  ///< accepted, but the position block is always sent empty
   bool device_name = false;
   bool comment = false;
   bool time_info = false;
@@ -45,7 +45,7 @@ struct LmdDataConfig {
 
 /// The beams that go into a telegram after LMPoutputRange is applied.
 struct OutputBeams {
-  int first_index = 0;             ///< index of the first output beam within the full scan
+  int first_index = 0;  ///< index of the first output beam within the full scan
   int count = 0;
   int32_t start_angle_1e4deg = 0;  ///< sensor angle of the first output beam
   uint32_t step_1e4deg = 0;
@@ -86,7 +86,8 @@ class Lms100Device {
 
  private:
   void handle_method(const std::vector<std::string_view>& t, uint64_t now_us, std::string& reply);
-  void handle_read(const std::vector<std::string_view>& t, uint64_t now_us, std::string& reply, Action& action);
+  void handle_read(const std::vector<std::string_view>& t, uint64_t now_us, std::string& reply,
+                   Action& action);
   void handle_write(const std::vector<std::string_view>& t, std::string& reply);
   void handle_event(const std::vector<std::string_view>& t, std::string& reply);
   void set_access_mode(const std::vector<std::string_view>& t, std::string& reply);

@@ -28,9 +28,16 @@ constexpr int64_t kMaxWaitUs = 50000;  // re-check the fault knobs at least this
 }  // namespace
 
 struct Lms100Emulator::Server {
-  Server(const Lms100EmulatorConfig& c, ScanSource& s, FaultInjector& f, int wake, std::atomic<bool>& stop_flag)
-      : config(c), source(s), faults(f), wake_fd(wake), stop(stop_flag), device(c.device),
-        telegram_counter(c.first_telegram_counter), rng(c.random_seed) {}
+  Server(const Lms100EmulatorConfig& c, ScanSource& s, FaultInjector& f, int wake,
+         std::atomic<bool>& stop_flag)
+      : config(c),
+        source(s),
+        faults(f),
+        wake_fd(wake),
+        stop(stop_flag),
+        device(c.device),
+        telegram_counter(c.first_telegram_counter),
+        rng(c.random_seed) {}
 
   void run();
   uint64_t device_now() const { return static_cast<uint64_t>(monotonic_us() - power_up_mono_us); }
@@ -88,12 +95,14 @@ void Lms100Emulator::Server::run() {
     if (next != std::numeric_limits<uint64_t>::max()) {
       wait_us = std::min<int64_t>(wait_us, next > now_dev ? static_cast<int64_t>(next - now_dev) : 0);
     }
-    if (stalled_until_mono > 0) wait_us = std::min(wait_us, std::max<int64_t>(0, stalled_until_mono - monotonic_us()));
+    if (stalled_until_mono > 0)
+      wait_us = std::min(wait_us, std::max<int64_t>(0, stalled_until_mono - monotonic_us()));
 
     fds[0] = {wake_fd, POLLIN, 0};
     fds[1] = {listen_fd, POLLIN, 0};
     fds[2] = {client_fd, POLLIN, 0};  // poll ignores negative fds
-    const timespec timeout{static_cast<time_t>(wait_us / 1000000), static_cast<long>((wait_us % 1000000) * 1000)};
+    const timespec timeout{static_cast<time_t>(wait_us / 1000000),
+                           static_cast<long>((wait_us % 1000000) * 1000)};
     if (::ppoll(fds, 3, &timeout, nullptr) <= 0) continue;
     if (fds[0].revents & POLLIN) {
       char drain[64];
@@ -197,7 +206,8 @@ void Lms100Emulator::Server::emit_scan(const ScanSlot& slot, bool stream) {
     }
   }
   const OutputBeams beams = device.output_beams();
-  const auto first_beam_offset_us = static_cast<uint64_t>(std::llround(beams.first_index * kTimeIncrementS * 1e6));
+  const auto first_beam_offset_us =
+      static_cast<uint64_t>(std::llround(beams.first_index * kTimeIncrementS * 1e6));
 
   ScanRequest scan;
   scan.first_beam_sensor_us = slot.start_us + first_beam_offset_us;
@@ -290,7 +300,8 @@ void Lms100Emulator::Server::write_out(const std::string& bytes) {
   size_t begin = 0;
   cuts.push_back(bytes.size());
   for (const size_t end : cuts) {
-    if (begin > 0 && settings.split_gap_ms > 0) ::usleep(static_cast<useconds_t>(settings.split_gap_ms) * 1000);
+    if (begin > 0 && settings.split_gap_ms > 0)
+      ::usleep(static_cast<useconds_t>(settings.split_gap_ms) * 1000);
     if (!send_all(client_fd, bytes.data() + begin, end - begin)) {
       disconnect();
       return;

@@ -18,17 +18,17 @@ namespace refloc {
 
 struct Lms100EmulatorConfig {
   std::string bind_address = "127.0.0.1";
-  uint16_t port = 2111;                  ///< 0 = ephemeral (tests); see Lms100Emulator::port()
+  uint16_t port = 2111;  ///< 0 = ephemeral (tests); see Lms100Emulator::port()
   Lms100DeviceConfig device;
-  double processing_delay_s = 0.001;     ///< last beam to telegram ready [s]
-  uint32_t power_up_clock_us = 0;        ///< device clock at power-up [us]; near 2^32 tests the wrap
-  uint16_t first_telegram_counter = 0;   ///< near 65535 tests the counter wrap
-  int startup_status_scans = 0;          ///< stream telegrams after sEN with device status "1 0" (real LMS111: 7)
-  bool rtc_from_host_clock = false;      ///< time-info block: host UTC instead of the unset RTC (1970 + uptime)
+  double processing_delay_s = 0.001;    ///< last beam to telegram ready [s]
+  uint32_t power_up_clock_us = 0;       ///< device clock at power-up [us]; near 2^32 tests the wrap
+  uint16_t first_telegram_counter = 0;  ///< near 65535 tests the counter wrap
+  int startup_status_scans = 0;      ///< stream telegrams after sEN with device status "1 0" (real LMS111: 7)
+  bool rtc_from_host_clock = false;  ///< time-info block: host UTC instead of the unset RTC (1970 + uptime)
   bool refuse_first_write_after_power_up = false;  ///< sFA 4 on the first sWN (sick_scan #44)
-  int send_timeout_ms = 1000;            ///< a client that does not read for this long is dropped [ms]
-  uint32_t random_seed = 1;              ///< for the split and junk faults
-  FaultSettings faults;                  ///< standing faults at start
+  int send_timeout_ms = 1000;  ///< a client that does not read for this long is dropped [ms]
+  uint32_t random_seed = 1;    ///< for the split and junk faults
+  FaultSettings faults;        ///< standing faults at start
 };
 
 /// Counts since start(), readable from any thread.

@@ -33,7 +33,8 @@ double tape_rssi(const Lms100ErrorModel& model, double remission, double cos_inc
   if (incidence >= model.tape_cutoff_incidence) {
     factor = 0.0;
   } else if (incidence > model.tape_full_incidence) {
-    factor = (model.tape_cutoff_incidence - incidence) / (model.tape_cutoff_incidence - model.tape_full_incidence);
+    factor =
+        (model.tape_cutoff_incidence - incidence) / (model.tape_cutoff_incidence - model.tape_full_incidence);
   }
   const double retro = std::max(0.0, model.tape_rssi_near - model.retro_rssi_drop_per_m * range) * factor;
   return std::max(retro, diffuse_rssi(model, remission, cos_incidence, range));
@@ -47,14 +48,16 @@ double metal_rssi(const Lms100ErrorModel& model, double remission, double cos_in
 
 double range_sigma_for(const Lms100ErrorModel& model, double rssi) {
   if (model.rssi_per_decade <= 0.0) return model.range_sigma;
-  const double weakness = std::clamp(1.0 - (rssi - model.rssi_at_detection_limit) / model.rssi_per_decade, 0.0, 1.0);
+  const double weakness =
+      std::clamp(1.0 - (rssi - model.rssi_at_detection_limit) / model.rssi_per_decade, 0.0, 1.0);
   return model.range_sigma * (1.0 + (model.weak_echo_sigma_factor - 1.0) * weakness);
 }
 
 Lms100ErrorModel parse_lms100_error_model(const JsonConfig& config, const std::string& p) {
   Lms100ErrorModel m;
   m.range_sigma = config.number(p + "/range_sigma", m.range_sigma, 0.0, 1.0);
-  m.weak_echo_sigma_factor = config.number(p + "/weak_echo_sigma_factor", m.weak_echo_sigma_factor, 1.0, 10.0);
+  m.weak_echo_sigma_factor =
+      config.number(p + "/weak_echo_sigma_factor", m.weak_echo_sigma_factor, 1.0, 10.0);
   m.range_offset = config.number(p + "/range_offset", m.range_offset, -1.0, 1.0);
   m.range_min = config.number(p + "/range_min", m.range_min, 0.0, 10.0);
   m.range_max = config.number(p + "/range_max", m.range_max, m.range_min + 0.01, 100.0);
@@ -70,18 +73,21 @@ Lms100ErrorModel parse_lms100_error_model(const JsonConfig& config, const std::s
       config.number(p + "/rssi_at_detection_limit", m.rssi_at_detection_limit, 1.0, 65534.0);
   m.rssi_per_decade = config.number(p + "/rssi_per_decade", m.rssi_per_decade, 0.0, 65534.0);
   m.diffuse_rssi_max = config.number(p + "/diffuse_rssi_max", m.diffuse_rssi_max, 1.0, 65534.0);
-  m.max_incidence = config.number(p + "/max_incidence_deg", m.max_incidence / kDegToRad, 0.0, 90.0) * kDegToRad;
+  m.max_incidence =
+      config.number(p + "/max_incidence_deg", m.max_incidence / kDegToRad, 0.0, 90.0) * kDegToRad;
   m.retro_rssi_near = config.number(p + "/retro_rssi_near", m.retro_rssi_near, 0.0, 65534.0);
-  m.retro_rssi_drop_per_m = config.number(p + "/retro_rssi_drop_per_m", m.retro_rssi_drop_per_m, 0.0, 65534.0);
+  m.retro_rssi_drop_per_m =
+      config.number(p + "/retro_rssi_drop_per_m", m.retro_rssi_drop_per_m, 0.0, 65534.0);
   m.retro_incidence_exponent =
       config.number(p + "/retro_incidence_exponent", m.retro_incidence_exponent, 0.0, 10.0);
   m.retro_range_bias = config.number(p + "/retro_range_bias", m.retro_range_bias, -0.5, 0.5);
   m.tape_rssi_near = config.number(p + "/tape_rssi_near", m.tape_rssi_near, 0.0, 65534.0);
   m.tape_full_incidence =
       config.number(p + "/tape_full_incidence_deg", m.tape_full_incidence / kDegToRad, 0.0, 90.0) * kDegToRad;
-  m.tape_cutoff_incidence = config.number(p + "/tape_cutoff_incidence_deg", m.tape_cutoff_incidence / kDegToRad,
-                                          m.tape_full_incidence / kDegToRad + 0.1, 90.0) *
-                            kDegToRad;
+  m.tape_cutoff_incidence =
+      config.number(p + "/tape_cutoff_incidence_deg", m.tape_cutoff_incidence / kDegToRad,
+                    m.tape_full_incidence / kDegToRad + 0.1, 90.0) *
+      kDegToRad;
   m.metal_rssi_peak = config.number(p + "/metal_rssi_peak", m.metal_rssi_peak, 0.0, 65534.0);
   m.metal_lobe_width =
       config.number(p + "/metal_lobe_width_deg", m.metal_lobe_width / kDegToRad, 0.1, 90.0) * kDegToRad;

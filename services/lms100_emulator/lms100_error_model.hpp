@@ -39,14 +39,14 @@ namespace refloc::sim {
 
 struct Lms100ErrorModel {
   // Range.
-  double range_sigma = 0.012;   ///< statistical error, 1 sigma Gaussian [m] (SICK: 12 mm typical)
+  double range_sigma = 0.012;  ///< statistical error, 1 sigma Gaussian [m] (SICK: 12 mm typical)
   /// range_sigma multiplier at the detection limit [-] (SICK: 20 mm maximum / 12 mm typical);
   /// echoes within one decade of energy above the limit blend linearly down to 1.
   double weak_echo_sigma_factor = 20.0 / 12.0;
-  double range_offset = 0.0;    ///< systematic error added to every range [m] (SICK: up to +-30 mm)
-  double range_min = 0.05;      ///< nearer echoes are reported as no echo (0) [m]
-  double range_max = 20.0;      ///< farther echoes are reported as no echo (0) [m]
-  bool quantize_to_mm = true;   ///< the sensor sends whole millimetres
+  double range_offset = 0.0;   ///< systematic error added to every range [m] (SICK: up to +-30 mm)
+  double range_min = 0.05;     ///< nearer echoes are reported as no echo (0) [m]
+  double range_max = 20.0;     ///< farther echoes are reported as no echo (0) [m]
+  bool quantize_to_mm = true;  ///< the sensor sends whole millimetres
 
   // Beam: the spot is beam_exit_diameter + range * beam_divergence wide (SICK OI §3.6.2).
   double beam_divergence = 0.015;     ///< full angle of the 1/e^2 spot [rad]
@@ -55,7 +55,7 @@ struct Lms100ErrorModel {
   /// Returns closer together than this blend into one echo whose range is the
   /// energy-weighted mean (the mixed pixel); farther apart they are separate
   /// echoes and the nearest detectable one is reported (DIST1 is the first echo).
-  double echo_merge_distance = 0.4;   ///< [m], about half the pulse length
+  double echo_merge_distance = 0.4;  ///< [m], about half the pulse length
 
   // Diffuse surfaces (logarithmic scale, see above).
   double detection_limit_remission = 0.10;  ///< remission detectable at detection_limit_range [-]
@@ -66,27 +66,27 @@ struct Lms100ErrorModel {
   double max_incidence = 1.518;             ///< no diffuse echo beyond this incidence [rad] (87 deg)
 
   // Cylindrical retro-reflectors.
-  double retro_rssi_near = 65000.0;         ///< [16-bit units]
-  double retro_rssi_drop_per_m = 100.0;     ///< [16-bit units / m]
-  double retro_incidence_exponent = 0.3;    ///< cos(incidence)^this [-]
+  double retro_rssi_near = 65000.0;       ///< [16-bit units]
+  double retro_rssi_drop_per_m = 100.0;   ///< [16-bit units / m]
+  double retro_incidence_exponent = 0.3;  ///< cos(incidence)^this [-]
   /// Extra range on returns from retro-reflectors and tape: the saturated pulse's walk
   /// error on some sensors (unknown for the LMS100, hence 0) [m].
   double retro_range_bias = 0.0;
 
   // Flat reflective tape.
-  double tape_rssi_near = 64000.0;          ///< [16-bit units]
-  double tape_full_incidence = 0.70;        ///< full brightness up to here [rad] (40 deg)
-  double tape_cutoff_incidence = 1.31;      ///< no retro return beyond [rad] (75 deg)
+  double tape_rssi_near = 64000.0;      ///< [16-bit units]
+  double tape_full_incidence = 0.70;    ///< full brightness up to here [rad] (40 deg)
+  double tape_cutoff_incidence = 1.31;  ///< no retro return beyond [rad] (75 deg)
 
   // Polished metal.
-  double metal_rssi_peak = 64000.0;         ///< at normal incidence [16-bit units]
-  double metal_lobe_width = 0.09;           ///< 1/e half-width of the specular lobe [rad] (5 deg)
+  double metal_rssi_peak = 64000.0;  ///< at normal incidence [16-bit units]
+  double metal_lobe_width = 0.09;    ///< 1/e half-width of the specular lobe [rad] (5 deg)
 
   /// RSSI of a partial hit = mean RSSI of the covered part * coverage^this [-]; 1 = proportional.
   double rssi_coverage_exponent = 0.5;
 
   // Reported values.
-  double rssi_sigma = 150.0;                ///< Gaussian noise on RSSI [16-bit units]
+  double rssi_sigma = 150.0;  ///< Gaussian noise on RSSI [16-bit units]
   double dazzle_range = 0.0;  ///< retro echoes nearer than this report code 1 "dazzled" [m]; 0 = never
 
   /// Energy of a diffuse echo at the detection limit [1/m^2].

@@ -4,11 +4,11 @@
 // runtime with one-line commands on stdin (--control-stdin; see fault_command.hpp).
 // With LCM available it publishes a HEARTBEAT with the emulator's counters.
 
-#include <CLI/CLI.hpp>
 #include <poll.h>
-#include <refloc/heartbeat_t.hpp>
 #include <signal.h>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
+#include <refloc/heartbeat_t.hpp>
 
 #include <atomic>
 #include <filesystem>
@@ -104,11 +104,14 @@ int run(const Options& o) {
   }
   if (!o.bind_address.empty()) config.bind_address = o.bind_address;
   if (o.port >= 0) config.port = static_cast<uint16_t>(o.port);
-  if (o.frequency_hz > 0) config.device.scan_frequency_1e2hz = static_cast<uint32_t>(o.frequency_hz * 100.0 + 0.5);
-  if (o.resolution_deg > 0) config.device.angular_resolution_1e4deg = static_cast<uint32_t>(o.resolution_deg * 1e4 + 0.5);
+  if (o.frequency_hz > 0)
+    config.device.scan_frequency_1e2hz = static_cast<uint32_t>(o.frequency_hz * 100.0 + 0.5);
+  if (o.resolution_deg > 0)
+    config.device.angular_resolution_1e4deg = static_cast<uint32_t>(o.resolution_deg * 1e4 + 0.5);
   const uint32_t f = config.device.scan_frequency_1e2hz, r = config.device.angular_resolution_1e4deg;
   if ((f != 2500 && f != 5000) || (r != 2500 && r != 5000) || (f == 5000 && r == 2500)) {
-    throw ConfigError("--frequency/--resolution: an LMS100 scans at 25 Hz (0.25 or 0.5 deg) or 50 Hz (0.5 deg)");
+    throw ConfigError(
+        "--frequency/--resolution: an LMS100 scans at 25 Hz (0.25 or 0.5 deg) or 50 Hz (0.5 deg)");
   }
   if (o.spin_up_s >= 0) config.device.spin_up_s = o.spin_up_s;
   if (!o.split.empty()) config.faults.split_mode = parse_split_mode(o.split);
@@ -125,8 +128,8 @@ int run(const Options& o) {
     auto world = std::make_shared<const sim::World>(sim::load_world(world_path));
     source = sim::make_rendered_scan_source(
         world, [map_T_laser](int64_t) { return map_T_laser; }, render_config, config.random_seed);
-    spdlog::info("rendering {} from map_T_laser ({:.3f}, {:.3f}, {:.4f})", world_path, map_T_laser.x, map_T_laser.y,
-                 map_T_laser.theta);
+    spdlog::info("rendering {} from map_T_laser ({:.3f}, {:.3f}, {:.4f})", world_path, map_T_laser.x,
+                 map_T_laser.y, map_T_laser.theta);
   } else if (!pose_text.empty()) {
     throw ConfigError("--pose needs --world (or world_file in the config)");
   } else {
@@ -182,8 +185,9 @@ int run(const Options& o) {
 int main(int argc, char** argv) {
   CLI::App app{"SICK LMS100 emulator: CoLa-A over TCP, test pattern or rendered world, fault injection"};
   refloc::Options o;
-  app.add_option("--config", o.config_path, "emulator config (JSON; keys in emulator_config_loader.hpp, plus "
-                                            "world_file, map_T_laser \"x,y,theta\", render {...})");
+  app.add_option("--config", o.config_path,
+                 "emulator config (JSON; keys in emulator_config_loader.hpp, plus "
+                 "world_file, map_T_laser \"x,y,theta\", render {...})");
   app.add_option("--bind", o.bind_address, "address to listen on (default 127.0.0.1)");
   app.add_option("--port", o.port, "TCP port (default 2111; 0 = any free port)")->check(CLI::Range(0, 65535));
   app.add_option("--frequency", o.frequency_hz, "scan frequency [Hz]: 25 or 50 (default 50)");
@@ -198,8 +202,10 @@ int main(int argc, char** argv) {
   app.add_flag("--duplicate-replies", o.duplicate_replies, "fault: send every command reply twice");
   app.add_flag("--refuse-readiness", o.refuse_readiness, "fault: STlms never reaches 7");
   app.add_flag("--refuse-first-write", o.refuse_first_write, "fault: sFA 4 on the first sWN after power-up");
-  app.add_option("--startup-status-scans", o.startup_status_scans, "stream telegrams with device status 1 0 after sEN");
-  app.add_flag("--control-stdin", o.control_stdin, "read fault commands from stdin (drop N, stall MS, close, ...)");
+  app.add_option("--startup-status-scans", o.startup_status_scans,
+                 "stream telegrams with device status 1 0 after sEN");
+  app.add_flag("--control-stdin", o.control_stdin,
+               "read fault commands from stdin (drop N, stall MS, close, ...)");
   app.add_flag("--no-lcm", o.no_lcm, "no HEARTBEAT (no LCM needed)");
   app.add_option("--lcm-url", o.lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
   app.add_flag("-v,--verbose", o.verbose, "debug log lines");

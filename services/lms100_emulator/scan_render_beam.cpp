@@ -10,7 +10,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 struct SubrayHit {
-  double t = kInf;         ///< distance from the sub-ray's start [m]
+  double t = kInf;  ///< distance from the sub-ray's start [m]
   double cos_incidence = 0.0;
   HitKind kind = HitKind::kNone;
   int id = -1;
@@ -29,7 +29,10 @@ bool segment_may_meet_cone(double ax, double ay, double bx, double by, double h0
   const auto clip = [&](double g0, double g1) {
     if (std::abs(g1) < 1e-15) return g0 <= 0.0;
     const double s = -g0 / g1;
-    if (g1 > 0.0) hi = std::min(hi, s); else lo = std::max(lo, s);
+    if (g1 > 0.0)
+      hi = std::min(hi, s);
+    else
+      lo = std::max(lo, s);
     return lo <= hi;
   };
   const double dx = bx - ax;
@@ -40,20 +43,28 @@ bool segment_may_meet_cone(double ax, double ay, double bx, double by, double h0
 
 double full_rssi(const Lms100ErrorModel& model, const SubrayHit& hit) {
   switch (hit.kind) {
-    case HitKind::kReflector: return retro_reflector_rssi(model, hit.cos_incidence, hit.t);
-    case HitKind::kDiffuse: return diffuse_rssi(model, hit.remission, hit.cos_incidence, hit.t);
-    case HitKind::kTape: return tape_rssi(model, hit.remission, hit.cos_incidence, hit.t);
-    case HitKind::kMetal: return metal_rssi(model, hit.remission, hit.cos_incidence, hit.t);
-    case HitKind::kNone: break;
+    case HitKind::kReflector:
+      return retro_reflector_rssi(model, hit.cos_incidence, hit.t);
+    case HitKind::kDiffuse:
+      return diffuse_rssi(model, hit.remission, hit.cos_incidence, hit.t);
+    case HitKind::kTape:
+      return tape_rssi(model, hit.remission, hit.cos_incidence, hit.t);
+    case HitKind::kMetal:
+      return metal_rssi(model, hit.remission, hit.cos_incidence, hit.t);
+    case HitKind::kNone:
+      break;
   }
   return 0.0;
 }
 
 HitKind hit_kind_of(SurfaceKind surface) {
   switch (surface) {
-    case SurfaceKind::kDiffuse: return HitKind::kDiffuse;
-    case SurfaceKind::kReflectiveTape: return HitKind::kTape;
-    case SurfaceKind::kMetal: return HitKind::kMetal;
+    case SurfaceKind::kDiffuse:
+      return HitKind::kDiffuse;
+    case SurfaceKind::kReflectiveTape:
+      return HitKind::kTape;
+    case SurfaceKind::kMetal:
+      return HitKind::kMetal;
   }
   return HitKind::kDiffuse;
 }
@@ -123,7 +134,8 @@ BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100
     const WorldSegment& s = world.segments[i];
     const Eigen::Vector2d a = s.map_p_a - map_p_origin;
     const Eigen::Vector2d b = s.map_p_b - map_p_origin;
-    if (!segment_may_meet_cone(a.dot(axis), a.dot(lateral), b.dot(axis), b.dot(lateral), h0, tan_half, x_max)) {
+    if (!segment_may_meet_cone(a.dot(axis), a.dot(lateral), b.dot(axis), b.dot(lateral), h0, tan_half,
+                               x_max)) {
       return;
     }
     const Eigen::Vector2d e = s.map_p_b - s.map_p_a;
@@ -222,8 +234,8 @@ BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100
 BeamEcho render_beam(const World& world, const BeamProfile& profile, const Lms100ErrorModel& model,
                      const Pose2& map_T_laser, double laser_angle, std::mt19937_64& rng,
                      const BeamCandidates* candidates) {
-  BeamEcho echo =
-      trace_beam(world, profile, model, map_T_laser.translation(), map_T_laser.theta + laser_angle, candidates);
+  BeamEcho echo = trace_beam(world, profile, model, map_T_laser.translation(),
+                             map_T_laser.theta + laser_angle, candidates);
   if (echo.truth.kind == HitKind::kNone) return echo;
   if (echo.truth.kind == HitKind::kReflector && echo.truth.range < model.dazzle_range) {
     echo.range = 0.001;

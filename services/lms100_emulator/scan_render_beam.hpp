@@ -55,9 +55,9 @@ struct BeamProfile {
   std::array<double, kMaxBeamSubrays> lateral_offset{};  ///< at the optics cover [m]
   std::array<double, kMaxBeamSubrays> cos_angle{};       ///< direction relative to the beam axis
   std::array<double, kMaxBeamSubrays> sin_angle{};
-  std::array<double, kMaxBeamSubrays> weight{};          ///< sums to 1
-  double half_divergence_tan = 0.0;                      ///< tan of the half angle [-]
-  double half_exit_diameter = 0.0;                       ///< [m]
+  std::array<double, kMaxBeamSubrays> weight{};  ///< sums to 1
+  double half_divergence_tan = 0.0;              ///< tan of the half angle [-]
+  double half_exit_diameter = 0.0;               ///< [m]
 };
 
 /// Sub-ray layout for the model's beam (clamps beam_subrays to 1..kMaxBeamSubrays).

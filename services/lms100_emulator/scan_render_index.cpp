@@ -81,7 +81,8 @@ void BeamCandidateIndex::build(const World& world, const std::vector<Pose2>& bea
       const double bearing_a = std::atan2(a.y(), a.x());
       const double sweep = std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
       const double half = std::asin(radius / nearest) + pad;
-      add_interval(code, std::min(bearing_a, bearing_a + sweep) - half, std::max(bearing_a, bearing_a + sweep) + half);
+      add_interval(code, std::min(bearing_a, bearing_a + sweep) - half,
+                   std::max(bearing_a, bearing_a + sweep) + half);
     }
   }
 

@@ -22,8 +22,8 @@ class BeamCandidateIndex {
  public:
   /// Index the world for beams i = 0..n-1 at laser-frame angles start_angle + i * angle_increment
   /// [rad] cast from beam_poses[i] (map_T_laser); max_range bounds what can be hit [m].
-  void build(const World& world, const std::vector<Pose2>& beam_poses, double start_angle, double angle_increment,
-             const BeamProfile& profile, double max_range);
+  void build(const World& world, const std::vector<Pose2>& beam_poses, double start_angle,
+             double angle_increment, const BeamProfile& profile, double max_range);
 
   /// Primitives beam i may hit (encoding in BeamCandidates).
   BeamCandidates candidates(size_t beam) const {

@@ -35,8 +35,8 @@ ScanSource make_rendered_scan_source(std::shared_ptr<const World> world, PoseAtT
   };
   ScanRenderConfig render_config = config;
   render_config.rssi_bits = 16;  // converted per request
-  auto state = std::make_shared<State>(
-      State{std::move(world), std::move(map_T_laser_at), ScanRenderer(render_config), std::mt19937_64(seed), {}});
+  auto state = std::make_shared<State>(State{
+      std::move(world), std::move(map_T_laser_at), ScanRenderer(render_config), std::mt19937_64(seed), {}});
   return [state](const ScanRequest& request, std::vector<uint16_t>& dist_mm, std::vector<uint16_t>& rssi) {
     ScanGeometry g = state->renderer.config().geometry;
     g.num_beams = std::min<int>(request.num_beams, static_cast<int>(dist_mm.size()));

@@ -41,7 +41,8 @@ void ScanRenderer::render(const World& world, const PoseAtTime& map_T_laser_at, 
 
 void ScanRenderer::render(const World& world, const Pose2& map_T_laser, int64_t first_beam_utime,
                           std::mt19937_64& rng, LaserScan& out) {
-  render(world, [&map_T_laser](int64_t) { return map_T_laser; }, first_beam_utime, rng, out);
+  render(
+      world, [&map_T_laser](int64_t) { return map_T_laser; }, first_beam_utime, rng, out);
 }
 
 void render_scan(const World& world, const PoseAtTime& map_T_laser_at, int64_t first_beam_utime,

@@ -63,7 +63,7 @@ class ScanScheduler {
   bool measuring_ = false;
   bool refuse_readiness_ = false;
   uint64_t spin_start_us_ = 0;
-  bool grid_valid_ = false;     ///< next_start_us_ is on the current grid
+  bool grid_valid_ = false;  ///< next_start_us_ is on the current grid
   uint64_t next_start_us_ = 0;
   uint16_t next_counter_;
   bool has_last_ = false;

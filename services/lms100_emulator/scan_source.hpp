@@ -29,8 +29,8 @@ namespace refloc {
 
 /// Which beams the emulator needs for one scan, and when they are measured.
 struct ScanRequest {
-  int64_t first_beam_utime = 0;      ///< host wall-clock time of beam 0 [us since epoch]
-  uint64_t first_beam_sensor_us = 0; ///< device clock at beam 0, unwrapped [us since power-up]
+  int64_t first_beam_utime = 0;             ///< host wall-clock time of beam 0 [us since epoch]
+  uint64_t first_beam_sensor_us = 0;        ///< device clock at beam 0, unwrapped [us since power-up]
   double time_increment_s = 1.0 / 36000.0;  ///< time between beams [s] (36 kHz on an LMS1xx)
   int num_beams = 0;
   /// Angle of beam 0 in the laser frame [rad] (x forward, counter-clockwise; the
@@ -42,7 +42,7 @@ struct ScanRequest {
 };
 
 /// Fills num_beams distances [mm, sensor codes] and RSSI values for one scan.
-using ScanSource =
-    std::function<void(const ScanRequest& request, std::vector<uint16_t>& dist_mm, std::vector<uint16_t>& rssi)>;
+using ScanSource = std::function<void(const ScanRequest& request, std::vector<uint16_t>& dist_mm,
+                                      std::vector<uint16_t>& rssi)>;
 
 }  // namespace refloc

@@ -35,9 +35,7 @@ int open_listening_socket(const std::string& address, uint16_t port, uint16_t& b
   return fd;
 }
 
-int accept_client(int listen_fd) {
-  return ::accept4(listen_fd, nullptr, nullptr, SOCK_CLOEXEC);
-}
+int accept_client(int listen_fd) { return ::accept4(listen_fd, nullptr, nullptr, SOCK_CLOEXEC); }
 
 void configure_client_socket(int fd, int send_timeout_ms) {
   const int one = 1;

@@ -4,9 +4,12 @@ namespace refloc::sim {
 
 const char* surface_kind_name(SurfaceKind kind) {
   switch (kind) {
-    case SurfaceKind::kDiffuse: return "diffuse";
-    case SurfaceKind::kReflectiveTape: return "tape";
-    case SurfaceKind::kMetal: return "metal";
+    case SurfaceKind::kDiffuse:
+      return "diffuse";
+    case SurfaceKind::kReflectiveTape:
+      return "tape";
+    case SurfaceKind::kMetal:
+      return "metal";
   }
   return "unknown";
 }

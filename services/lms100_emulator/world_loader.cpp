@@ -61,8 +61,8 @@ void read_unmapped_reflectors(const JsonConfig& config, const std::string& list,
     r.id = static_cast<int>(config.required_integer(item + "/id", 0, 1000000000));
     const int clash = world.reflectors.index_of(r.id);
     if (clash >= 0) {
-      config.fail(item + "/id", fmt::format("duplicate reflector id {} (already in the map file, index {})",
-                                            r.id, clash));
+      config.fail(item + "/id",
+                  fmt::format("duplicate reflector id {} (already in the map file, index {})", r.id, clash));
     }
     r.map_p_center.x() = config.required_number(item + "/x", -kMaxCoordinate_m, kMaxCoordinate_m);
     r.map_p_center.y() = config.required_number(item + "/y", -kMaxCoordinate_m, kMaxCoordinate_m);
@@ -80,8 +80,10 @@ void read_map_errors(const JsonConfig& config, const std::string& pointer, World
     const long long id = config.required_integer(item + "/id", 0, 1000000000);
     const int index = world.reflectors.index_of(static_cast<int>(id));
     if (index < 0) config.fail(item + "/id", fmt::format("no reflector with id {} in the map", id));
-    reflectors[index].map_p_center.x() = config.required_number(item + "/x", -kMaxCoordinate_m, kMaxCoordinate_m);
-    reflectors[index].map_p_center.y() = config.required_number(item + "/y", -kMaxCoordinate_m, kMaxCoordinate_m);
+    reflectors[index].map_p_center.x() =
+        config.required_number(item + "/x", -kMaxCoordinate_m, kMaxCoordinate_m);
+    reflectors[index].map_p_center.y() =
+        config.required_number(item + "/y", -kMaxCoordinate_m, kMaxCoordinate_m);
   }
   const std::string missing = pointer + "/missing_reflector_ids";
   const size_t num_missing = config.array_size(missing, false);

@@ -19,9 +19,9 @@
 //     "drivable_areas": [{"x_min": 1, "y_min": 1, "x_max": 19, "y_max": 11}]
 //   }
 //
-// The last three model map errors for robustness tests. Only "map_file" is required; "name", "closed" (default false) and "remission"
-// (defaults: walls/obstacles 0.5, tape 0.8, metal 0.05 for its diffuse part) are
-// optional. Coordinates are metres in the map frame.
+// The last three model map errors for robustness tests. Only "map_file" is required; "name", "closed"
+// (default false) and "remission" (defaults: walls/obstacles 0.5, tape 0.8, metal 0.05 for its diffuse part)
+// are optional. Coordinates are metres in the map frame.
 
 #include "lms100_emulator/world.hpp"
 

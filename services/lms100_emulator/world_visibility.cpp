@@ -59,7 +59,8 @@ std::vector<int> visible_reflector_ids(const World& world, const Pose2& map_T_la
 
 double clearance(const World& world, const Eigen::Vector2d& map_p) {
   double best = std::numeric_limits<double>::infinity();
-  for (const WorldSegment& s : world.segments) best = std::min(best, point_segment_distance(map_p, s.map_p_a, s.map_p_b));
+  for (const WorldSegment& s : world.segments)
+    best = std::min(best, point_segment_distance(map_p, s.map_p_a, s.map_p_b));
   for (const MapReflector& r : world.reflectors.reflectors) {
     best = std::min(best, (r.map_p_center - map_p).norm() - r.radius);
   }

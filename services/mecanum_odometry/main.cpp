@@ -2,10 +2,10 @@
 // one output per encoder sample.
 
 #include "common/clock.hpp"
-#include "common/lcm_conversions.hpp"
-#include "common/service_command_line.hpp"
 #include "common/json_config.hpp"
+#include "common/lcm_conversions.hpp"
 #include "common/robot_config.hpp"
+#include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
 #include "mecanum_odometry/mecanum_odometry.hpp"
 #include "mecanum_odometry/odometry_config_file.hpp"
@@ -82,7 +82,8 @@ int run(const std::string& lcm_url, const std::string& robot_path, const std::st
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  refloc::ServiceCommandLine cli("mecanum_odometry", "Mecanum wheel odometry: WHEEL_ENCODERS -> ODOMETRY", "");
+  refloc::ServiceCommandLine cli("mecanum_odometry", "Mecanum wheel odometry: WHEEL_ENCODERS -> ODOMETRY",
+                                 "");
   cli.add_robot_option("robot geometry file (JSON)");
   return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.robot_path, cli.config_path); });
 }

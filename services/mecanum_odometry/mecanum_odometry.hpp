@@ -25,13 +25,13 @@ struct OdometryConfig {
 
 /// The odometry estimate after an encoder sample.
 struct OdometryEstimate {
-  int64_t utime = 0;                 ///< time of the encoder sample [us]
-  Pose2 odom_T_robot;                ///< pose in the odometry frame [m, m, rad]
-  BodyTwist twist;                   ///< body twist over the last interval [m/s, m/s, rad/s]
+  int64_t utime = 0;   ///< time of the encoder sample [us]
+  Pose2 odom_T_robot;  ///< pose in the odometry frame [m, m, rad]
+  BodyTwist twist;     ///< body twist over the last interval [m/s, m/s, rad/s]
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< of odom_T_robot
-  double distance = 0.0;             ///< path length since start [m]
-  double slip_indicator = 0.0;       ///< |redundancy residual| over the last interval [m/s]
-  Pose2 last_increment;              ///< body displacement over the last interval
+  double distance = 0.0;                                 ///< path length since start [m]
+  double slip_indicator = 0.0;  ///< |redundancy residual| over the last interval [m/s]
+  Pose2 last_increment;         ///< body displacement over the last interval
 };
 
 enum class EncoderSampleResult { kIntegrated, kFirstSample, kOutOfOrder, kGapRestart, kImplausible };

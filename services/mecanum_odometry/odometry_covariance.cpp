@@ -9,8 +9,7 @@ Eigen::Matrix3d increment_covariance(const Pose2& delta, const OdometryNoise& no
   const double turn = std::abs(delta.theta);
   const double var_xy =
       noise.translation_variance_per_m * distance + noise.translation_variance_per_rad * turn;
-  const double var_theta =
-      noise.heading_variance_per_m * distance + noise.heading_variance_per_rad * turn;
+  const double var_theta = noise.heading_variance_per_m * distance + noise.heading_variance_per_rad * turn;
   return Eigen::Vector3d(var_xy, var_xy, var_theta).asDiagonal();
 }
 

@@ -3,8 +3,8 @@
 // and at the status rate.
 
 #include "common/clock.hpp"
-#include "common/service_command_line.hpp"
 #include "common/json_config.hpp"
+#include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
 #include "navigator/navigator.hpp"
 #include "navigator/navigator_config_file.hpp"
@@ -23,8 +23,8 @@ NavGoal to_goal(const nav_goal_t& msg) {
   goal.xy_tolerance = msg.xy_tolerance;
   goal.heading_tolerance = msg.heading_tolerance;
   goal.max_speed = msg.max_speed;
-  const size_t n = std::min({static_cast<size_t>(std::max(msg.nwaypoints, 0)), msg.x.size(), msg.y.size(),
-                             msg.theta.size()});
+  const size_t n = std::min(
+      {static_cast<size_t>(std::max(msg.nwaypoints, 0)), msg.x.size(), msg.y.size(), msg.theta.size()});
   for (size_t i = 0; i < n; ++i) goal.waypoints.push_back({msg.x[i], msg.y[i], msg.theta[i]});
   return goal;
 }
@@ -91,7 +91,8 @@ int run(const std::string& lcm_url, const std::string& config_path) {
     const NavState before = navigator.status().state;
     const TwistCommand cmd = navigator.update(now);
     const NavState after = navigator.status().state;
-    if (after == NavState::kStoppedNoPose && before != NavState::kStoppedNoPose) ++runtime.counter("pose_stops");
+    if (after == NavState::kStoppedNoPose && before != NavState::kStoppedNoPose)
+      ++runtime.counter("pose_stops");
     if (goal_active(before) || goal_active(after)) last_active_utime = now;
     // Keep commanding (zeros once done) for half a second after a goal ends, then
     // fall silent so another commander (teleoperation) may drive.
@@ -115,7 +116,7 @@ int run(const std::string& lcm_url, const std::string& config_path) {
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  refloc::ServiceCommandLine cli("navigator", "Holonomic waypoint navigator: NAV_GOAL + POSE -> CMD_VEL, NAV_STATUS",
-                                 "");
+  refloc::ServiceCommandLine cli("navigator",
+                                 "Holonomic waypoint navigator: NAV_GOAL + POSE -> CMD_VEL, NAV_STATUS", "");
   return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path); });
 }

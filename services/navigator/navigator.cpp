@@ -10,11 +10,16 @@ namespace refloc {
 
 const char* to_string(NavState state) {
   switch (state) {
-    case NavState::kIdle: return "IDLE";
-    case NavState::kDriving: return "DRIVING";
-    case NavState::kArrived: return "ARRIVED";
-    case NavState::kStoppedNoPose: return "STOPPED_NO_POSE";
-    case NavState::kAborted: return "ABORTED";
+    case NavState::kIdle:
+      return "IDLE";
+    case NavState::kDriving:
+      return "DRIVING";
+    case NavState::kArrived:
+      return "ARRIVED";
+    case NavState::kStoppedNoPose:
+      return "STOPPED_NO_POSE";
+    case NavState::kAborted:
+      return "ABORTED";
   }
   return "?";
 }
@@ -24,8 +29,9 @@ Navigator::Navigator(const NavigatorConfig& config) : config_(config), translati
 namespace {
 
 bool same_goal(const NavGoal& a, const NavGoal& b) {
-  if (a.goal_id != b.goal_id || a.waypoints.size() != b.waypoints.size() || a.xy_tolerance != b.xy_tolerance ||
-      a.heading_tolerance != b.heading_tolerance || a.max_speed != b.max_speed) {
+  if (a.goal_id != b.goal_id || a.waypoints.size() != b.waypoints.size() ||
+      a.xy_tolerance != b.xy_tolerance || a.heading_tolerance != b.heading_tolerance ||
+      a.max_speed != b.max_speed) {
     return false;
   }
   for (size_t i = 0; i < a.waypoints.size(); ++i) {

@@ -20,14 +20,14 @@
 namespace refloc {
 
 struct NavigatorConfig {
-  ProfileLimits translation{1.0, 0.5, 0.8, 0.03, 0.03, 2.0};    ///< [m/s, m/s^2, -, m, m/s, 1/s]
-  ProfileLimits rotation{1.0, 1.0, 0.8, 0.05, 0.05, 2.0};       ///< [rad/s, rad/s^2, -, rad, rad/s, 1/s]
-  double pose_timeout = 0.2;          ///< a pose older than this stops the robot [s]
-  double settle_time = 0.2;           ///< within tolerance this long = waypoint reached [s]
-  double progress_timeout = 30.0;     ///< abort when the waypoint gets no closer this long [s]
-  double default_xy_tolerance = 0.010;                   ///< [m]
-  double default_heading_tolerance = 0.5 * M_PI / 180.0; ///< [rad]
-  bool drive_on_degraded_pose = false;  ///< accept fused poses without a recent laser fix
+  ProfileLimits translation{1.0, 0.5, 0.8, 0.03, 0.03, 2.0};  ///< [m/s, m/s^2, -, m, m/s, 1/s]
+  ProfileLimits rotation{1.0, 1.0, 0.8, 0.05, 0.05, 2.0};     ///< [rad/s, rad/s^2, -, rad, rad/s, 1/s]
+  double pose_timeout = 0.2;                                  ///< a pose older than this stops the robot [s]
+  double settle_time = 0.2;             ///< within tolerance this long = waypoint reached [s]
+  double progress_timeout = 30.0;       ///< abort when the waypoint gets no closer this long [s]
+  double default_xy_tolerance = 0.010;  ///< [m]
+  double default_heading_tolerance = 0.5 * M_PI / 180.0;  ///< [rad]
+  bool drive_on_degraded_pose = false;                    ///< accept fused poses without a recent laser fix
 };
 
 struct Waypoint {

@@ -12,12 +12,12 @@
 namespace refloc {
 
 struct ProfileLimits {
-  double max_speed = 1.0;       ///< [m/s] or [rad/s]
-  double max_accel = 0.5;       ///< [m/s^2] or [rad/s^2]
-  double brake_fraction = 0.8;  ///< braking plans with this share of max_accel (margin for lag)
-  double creep_distance = 0.03; ///< final approach starts here [m] or [rad]
-  double creep_speed = 0.03;    ///< [m/s] or [rad/s]
-  double gain = 2.0;            ///< final approach speed per remaining distance [1/s]
+  double max_speed = 1.0;        ///< [m/s] or [rad/s]
+  double max_accel = 0.5;        ///< [m/s^2] or [rad/s^2]
+  double brake_fraction = 0.8;   ///< braking plans with this share of max_accel (margin for lag)
+  double creep_distance = 0.03;  ///< final approach starts here [m] or [rad]
+  double creep_speed = 0.03;     ///< [m/s] or [rad/s]
+  double gain = 2.0;             ///< final approach speed per remaining distance [1/s]
 };
 
 /// Speed (>= 0) wanted with remaining distance (>= 0) to the target.
@@ -27,7 +27,6 @@ double approach_speed(double remaining, const ProfileLimits& limits);
 double rate_limit(double current, double target, double max_step);
 
 /// current moved toward target by a vector step of norm at most max_step.
-Eigen::Vector2d rate_limit(const Eigen::Vector2d& current, const Eigen::Vector2d& target,
-                           double max_step);
+Eigen::Vector2d rate_limit(const Eigen::Vector2d& current, const Eigen::Vector2d& target, double max_step);
 
 }  // namespace refloc

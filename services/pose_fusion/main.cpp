@@ -2,9 +2,9 @@
 // one output per odometry message.
 
 #include "common/clock.hpp"
+#include "common/json_config.hpp"
 #include "common/lcm_conversions.hpp"
 #include "common/service_command_line.hpp"
-#include "common/json_config.hpp"
 #include "common/service_runtime.hpp"
 #include "pose_fusion/fusion_config_file.hpp"
 #include "pose_fusion/odometry_continuity.hpp"
@@ -22,10 +22,14 @@ namespace {
 
 int8_t to_status(FusionStatus s) {
   switch (s) {
-    case FusionStatus::kInitializing: return pose2d_t::STATUS_INITIALIZING;
-    case FusionStatus::kOk: return pose2d_t::STATUS_OK;
-    case FusionStatus::kDegraded: return pose2d_t::STATUS_DEGRADED;
-    case FusionStatus::kLost: return pose2d_t::STATUS_LOST;
+    case FusionStatus::kInitializing:
+      return pose2d_t::STATUS_INITIALIZING;
+    case FusionStatus::kOk:
+      return pose2d_t::STATUS_OK;
+    case FusionStatus::kDegraded:
+      return pose2d_t::STATUS_DEGRADED;
+    case FusionStatus::kLost:
+      return pose2d_t::STATUS_LOST;
   }
   return pose2d_t::STATUS_LOST;
 }
@@ -66,22 +70,33 @@ int run(const std::string& lcm_url, const std::string& config_path) {
 
   const auto count_fix_result = [&](FixResult result) {
     switch (result) {
-      case FixResult::kAccepted: ++runtime.counter("fixes_accepted"); break;
-      case FixResult::kInitialised: ++runtime.counter("initialisations"); break;
+      case FixResult::kAccepted:
+        ++runtime.counter("fixes_accepted");
+        break;
+      case FixResult::kInitialised:
+        ++runtime.counter("initialisations");
+        break;
       case FixResult::kRejectedGate:
         ++runtime.counter("fixes_rejected_gate");
         spdlog::debug("fix rejected, Mahalanobis^2 {:.1f}", fusion.last_mahalanobis_squared());
         break;
-      case FixResult::kTooOld: ++runtime.counter("fixes_too_old"); break;
-      case FixResult::kWaitingForGood: ++runtime.counter("fixes_not_good_enough_to_start"); break;
-      case FixResult::kDeferred: ++runtime.counter("fixes_deferred"); break;
+      case FixResult::kTooOld:
+        ++runtime.counter("fixes_too_old");
+        break;
+      case FixResult::kWaitingForGood:
+        ++runtime.counter("fixes_not_good_enough_to_start");
+        break;
+      case FixResult::kDeferred:
+        ++runtime.counter("fixes_deferred");
+        break;
     }
   };
 
   runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
     const OdometryStep step = continuity.next({msg.utime, {msg.x, msg.y, msg.theta}, msg.distance});
     switch (step.kind) {
-      case OdometryStepKind::kFirst: break;
+      case OdometryStepKind::kFirst:
+        break;
       case OdometryStepKind::kBackwards:
         // A restarted odometry service on another clock: take the next step from here.
         ++runtime.counter("odometry_restarts");
@@ -92,8 +107,9 @@ int run(const std::string& lcm_url, const std::string& config_path) {
         break;
       case OdometryStepKind::kSeam:
         ++runtime.counter(step.restarted ? "odometry_restarts" : "odometry_gaps");
-        spdlog::warn("ODOMETRY {} after {:.3f} s: motion meanwhile unobserved, waiting for a fix to re-anchor",
-                     step.restarted ? "restarted" : "resumed", step.gap);
+        spdlog::warn(
+            "ODOMETRY {} after {:.3f} s: motion meanwhile unobserved, waiting for a fix to re-anchor",
+            step.restarted ? "restarted" : "resumed", step.gap);
         fusion.add_odometry_seam(msg.utime, step.delta,
                                  increment_covariance(step.delta, config.odometry_noise) + step.unobserved_q);
         break;
@@ -136,7 +152,8 @@ int run(const std::string& lcm_url, const std::string& config_path) {
     }
     const FixResult result = fusion.add_fix(*fix);
     count_fix_result(result);
-    if (result == FixResult::kAccepted || result == FixResult::kInitialised) reflectors_used = msg.reflectors_used;
+    if (result == FixResult::kAccepted || result == FixResult::kInitialised)
+      reflectors_used = msg.reflectors_used;
     if (result == FixResult::kInitialised) {
       spdlog::info("initialised from the fix at utime {}: ({:.3f}, {:.3f}, {:.4f})", msg.utime, msg.x, msg.y,
                    msg.theta);
@@ -150,6 +167,7 @@ int run(const std::string& lcm_url, const std::string& config_path) {
 
 int main(int argc, char** argv) {
   refloc::ServiceCommandLine cli(
-      "pose_fusion", "EKF fusion of wheel odometry and delayed laser pose fixes: ODOMETRY + LASER_POSE -> POSE", "");
+      "pose_fusion",
+      "EKF fusion of wheel odometry and delayed laser pose fixes: ODOMETRY + LASER_POSE -> POSE", "");
   return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path); });
 }

@@ -23,14 +23,14 @@ struct OdometryContinuityConfig {
   /// Longer between messages: the odometry may have restarted its integration
   /// (mecanum_odometry's max_gap_s) and missed motion [s].
   double max_gap = 1.0;
-  double max_speed = 1.5;      ///< bound on the robot's speed during a seam [m/s]
-  double max_yaw_rate = 1.5;   ///< bound on its yaw rate during a seam [rad/s]
+  double max_speed = 1.5;        ///< bound on the robot's speed during a seam [m/s]
+  double max_yaw_rate = 1.5;     ///< bound on its yaw rate during a seam [rad/s]
   double distance_slack = 1e-6;  ///< distance may shrink this much by rounding [m]
 };
 
 /// One ODOMETRY message as the filter needs it.
 struct OdometrySample {
-  int64_t utime = 0;   ///< [us]
+  int64_t utime = 0;  ///< [us]
   Pose2 odom_T_robot;
   double distance = 0.0;  ///< path length since the odometry service started [m]
 };
@@ -44,10 +44,10 @@ enum class OdometryStepKind {
 
 struct OdometryStep {
   OdometryStepKind kind = OdometryStepKind::kFirst;
-  Pose2 delta;                                       ///< body-frame displacement
+  Pose2 delta;                                             ///< body-frame displacement
   Eigen::Matrix3d unobserved_q = Eigen::Matrix3d::Zero();  ///< kSeam only [m^2, m rad, rad^2]
-  double gap = 0.0;                                  ///< time since the previous message [s]
-  bool restarted = false;                            ///< the odometry frame restarted (distance went back)
+  double gap = 0.0;                                        ///< time since the previous message [s]
+  bool restarted = false;  ///< the odometry frame restarted (distance went back)
 };
 
 class OdometryContinuity {

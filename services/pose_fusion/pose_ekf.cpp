@@ -15,8 +15,7 @@ Eigen::Vector3d innovation(const Pose2& x, const Pose2& z) {
 }  // namespace
 
 PoseEstimate ekf_predict(const PoseEstimate& prior, const Pose2& delta, const Eigen::Matrix3d& q) {
-  return {prior.map_T_robot * delta,
-          compose_covariance(prior.map_T_robot, prior.covariance, delta, q)};
+  return {prior.map_T_robot * delta, compose_covariance(prior.map_T_robot, prior.covariance, delta, q)};
 }
 
 double mahalanobis_squared(const PoseEstimate& prior, const Pose2& z, const Eigen::Matrix3d& r) {

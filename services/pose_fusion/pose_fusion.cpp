@@ -8,10 +8,14 @@ namespace refloc {
 
 const char* to_string(FusionStatus status) {
   switch (status) {
-    case FusionStatus::kInitializing: return "INITIALIZING";
-    case FusionStatus::kOk: return "OK";
-    case FusionStatus::kDegraded: return "DEGRADED";
-    case FusionStatus::kLost: return "LOST";
+    case FusionStatus::kInitializing:
+      return "INITIALIZING";
+    case FusionStatus::kOk:
+      return "OK";
+    case FusionStatus::kDegraded:
+      return "DEGRADED";
+    case FusionStatus::kLost:
+      return "LOST";
   }
   return "?";
 }

@@ -25,7 +25,7 @@
 namespace refloc {
 
 struct FusionConfig {
-  double history = 1.0;                 ///< how far back a fix can be applied [s]
+  double history = 1.0;  ///< how far back a fix can be applied [s]
   /// A fix newer than the latest odometry by more than this waits for odometry
   /// to reach its time (odometry is late or its service is restarting). Applied
   /// to an older estimate it would be gated out while the robot moves [s].

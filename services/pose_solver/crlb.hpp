@@ -14,7 +14,7 @@ namespace refloc {
 
 /// Independent Gaussian noise on each reflector's measured range and bearing.
 struct RangeBearingNoise {
-  double range_sigma = 0.01;                   ///< [m]
+  double range_sigma = 0.01;                  ///< [m]
   double bearing_sigma = 0.1 * M_PI / 180.0;  ///< [rad]
 };
 

@@ -28,7 +28,8 @@ void residual_and_jacobian(const PointObservation& o, const Pose2& map_T_robot, 
 
 }  // namespace
 
-Eigen::Vector2d predict_laser_point(const PointObservation& o, const Pose2& map_T_robot, const Pose2& robot_T_laser) {
+Eigen::Vector2d predict_laser_point(const PointObservation& o, const Pose2& map_T_robot,
+                                    const Pose2& robot_T_laser) {
   return (map_T_robot * robot_T_laser).inverse() * o.map_p;
 }
 
@@ -37,8 +38,9 @@ double normalised_residual(const PointObservation& o, const Pose2& map_T_robot, 
   return std::sqrt(std::max(0.0, e.dot(o.information * e)));
 }
 
-Eigen::Matrix3d pose_information(const std::vector<PointObservation>& observations, const std::vector<char>* use,
-                                 const Pose2& map_T_robot, const Pose2& robot_T_laser) {
+Eigen::Matrix3d pose_information(const std::vector<PointObservation>& observations,
+                                 const std::vector<char>* use, const Pose2& map_T_robot,
+                                 const Pose2& robot_T_laser) {
   Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
   Eigen::Vector2d e;
   Eigen::Matrix<double, 2, 3> j;
@@ -51,8 +53,8 @@ Eigen::Matrix3d pose_information(const std::vector<PointObservation>& observatio
 }
 
 GaussNewtonResult refine_pose(const std::vector<PointObservation>& observations, const std::vector<char>* use,
-                              const Pose2& robot_T_laser, const Pose2& initial_map_T_robot, int max_iterations,
-                              double convergence_step) {
+                              const Pose2& robot_T_laser, const Pose2& initial_map_T_robot,
+                              int max_iterations, double convergence_step) {
   GaussNewtonResult result;
   result.map_T_robot = initial_map_T_robot;
   Eigen::Vector2d e;

@@ -4,10 +4,10 @@
 #include "pose_solver/pose_solver.hpp"
 #include "pose_solver/solver_config_file.hpp"
 
-#include "common/service_command_line.hpp"
-#include "common/lcm_conversions.hpp"
 #include "common/json_config.hpp"
+#include "common/lcm_conversions.hpp"
 #include "common/robot_config.hpp"
+#include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
 
 #include <refloc/pose2d_t.hpp>
@@ -18,9 +18,12 @@ namespace {
 
 int8_t to_message_status(SolveStatus s) {
   switch (s) {
-    case SolveStatus::kOk: return pose2d_t::STATUS_OK;
-    case SolveStatus::kDegraded: return pose2d_t::STATUS_DEGRADED;
-    case SolveStatus::kLost: break;
+    case SolveStatus::kOk:
+      return pose2d_t::STATUS_OK;
+    case SolveStatus::kDegraded:
+      return pose2d_t::STATUS_DEGRADED;
+    case SolveStatus::kLost:
+      break;
   }
   return pose2d_t::STATUS_LOST;
 }
@@ -35,8 +38,8 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   const Pose2 robot_T_laser = load_robot_config(robot_path).robot_T_laser;
   PoseSolver solver(config.solver, robot_T_laser);
   spdlog::info("mode {}, laser mount ({:.3f} m, {:.3f} m, {:.4f} rad)",
-               config.solver.mode == SolverMode::kPaper ? "paper" : "default", robot_T_laser.x, robot_T_laser.y,
-               robot_T_laser.theta);
+               config.solver.mode == SolverMode::kPaper ? "paper" : "default", robot_T_laser.x,
+               robot_T_laser.y, robot_T_laser.theta);
 
   ServiceRuntime runtime("pose_solver", lcm_url);
   std::vector<ReflectorDetection> detections;
@@ -61,14 +64,17 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
       solution.status = SolveStatus::kLost;
       solution.reflectors_used = 0;
       solution.rms_residual = 0.0;
-      out.status = msg.status == reflector_matches_t::STATUS_AMBIGUOUS ? pose2d_t::STATUS_AMBIGUOUS : pose2d_t::STATUS_LOST;
+      out.status = msg.status == reflector_matches_t::STATUS_AMBIGUOUS ? pose2d_t::STATUS_AMBIGUOUS
+                                                                       : pose2d_t::STATUS_LOST;
     }
-    const bool has_pose = msg.status == reflector_matches_t::STATUS_OK && solution.status != SolveStatus::kLost;
+    const bool has_pose =
+        msg.status == reflector_matches_t::STATUS_OK && solution.status != SolveStatus::kLost;
     out.x = has_pose ? solution.map_T_robot.x : 0.0;
     out.y = has_pose ? solution.map_T_robot.y : 0.0;
     out.theta = has_pose ? solution.map_T_robot.theta : 0.0;
     // No fix: a covariance no consumer mistakes for information.
-    covariance_to_lcm(has_pose ? solution.covariance : Eigen::Matrix3d(Eigen::Matrix3d::Identity() * 1e6), out.covariance);
+    covariance_to_lcm(has_pose ? solution.covariance : Eigen::Matrix3d(Eigen::Matrix3d::Identity() * 1e6),
+                      out.covariance);
     out.reflectors_used = has_pose ? solution.reflectors_used : 0;
     out.residual = has_pose ? solution.rms_residual : 0.0;
     if (out.status == pose2d_t::STATUS_OK) {
@@ -77,7 +83,8 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
       if (out.status == pose2d_t::STATUS_DEGRADED) ++runtime.counter("degraded_fixes");
       if (out.status == pose2d_t::STATUS_LOST) ++runtime.counter("lost_fixes");
       if (out.status == pose2d_t::STATUS_AMBIGUOUS) ++runtime.counter("ambiguous_fixes");
-      runtime.set_state(heartbeat_t::STATE_DEGRADED, has_pose ? "last fix DEGRADED" : "no fix from the last scan");
+      runtime.set_state(heartbeat_t::STATE_DEGRADED,
+                        has_pose ? "last fix DEGRADED" : "no fix from the last scan");
     }
     if (has_pose && solution.reflectors_used < static_cast<int>(matches.size())) {
       runtime.counter("outlier_matches") += static_cast<int64_t>(matches.size()) - solution.reflectors_used;
@@ -91,7 +98,8 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  refloc::ServiceCommandLine cli("pose_solver", "Pose solver: REFLECTOR_MATCHES -> LASER_POSE (map_T_robot with covariance)",
+  refloc::ServiceCommandLine cli("pose_solver",
+                                 "Pose solver: REFLECTOR_MATCHES -> LASER_POSE (map_T_robot with covariance)",
                                  "deploy/config/pose_solver.json");
   cli.add_robot_option("robot geometry file with /laser_mount (JSON)");
   return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path, cli.robot_path); });

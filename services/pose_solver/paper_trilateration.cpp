@@ -23,7 +23,8 @@ bool trilaterate_position(const std::vector<PointObservation>& observations, con
       if (use && !(*use)[j]) continue;
       const PointObservation& b = observations[j];
       const Eigen::Vector2d row = 2.0 * (b.map_p - a.map_p);
-      const double rhs = a.range * a.range - b.range * b.range - a.map_p.squaredNorm() + b.map_p.squaredNorm();
+      const double rhs =
+          a.range * a.range - b.range * b.range - a.map_p.squaredNorm() + b.map_p.squaredNorm();
       ata += row * row.transpose();
       atb += row * rhs;
     }
@@ -36,7 +37,8 @@ bool trilaterate_position(const std::vector<PointObservation>& observations, con
   return map_p_laser.allFinite();
 }
 
-double paper_mean_heading(const std::vector<PointObservation>& observations, const Eigen::Vector2d& map_p_laser) {
+double paper_mean_heading(const std::vector<PointObservation>& observations,
+                          const Eigen::Vector2d& map_p_laser) {
   if (observations.empty()) return 0.0;
   double sum = 0.0;
   for (const PointObservation& o : observations) {
@@ -63,7 +65,8 @@ Eigen::Vector2d paper_robot_position(const Eigen::Vector2d& map_p_laser, double 
                                      const Pose2& robot_T_laser) {
   const double oo = std::hypot(robot_T_laser.x, robot_T_laser.y);
   const double beta = -std::atan2(-robot_T_laser.y, -robot_T_laser.x);
-  return {map_p_laser.x() + oo * std::cos(robot_heading - beta), map_p_laser.y() + oo * std::sin(robot_heading - beta)};
+  return {map_p_laser.x() + oo * std::cos(robot_heading - beta),
+          map_p_laser.y() + oo * std::sin(robot_heading - beta)};
 }
 
 }  // namespace refloc

@@ -22,7 +22,8 @@ bool trilaterate_position(const std::vector<PointObservation>& observations, con
                           double min_conditioning, Eigen::Vector2d& map_p_laser);
 
 /// Eq. 6-7: the paper's arithmetic mean of the wrapped alpha_i [rad] (wrong near +-pi, kept as published).
-double paper_mean_heading(const std::vector<PointObservation>& observations, const Eigen::Vector2d& map_p_laser);
+double paper_mean_heading(const std::vector<PointObservation>& observations,
+                          const Eigen::Vector2d& map_p_laser);
 
 /// Eq. 6 with a circular mean instead of eq. 7 [rad].
 double circular_mean_heading(const std::vector<PointObservation>& observations, const std::vector<char>* use,

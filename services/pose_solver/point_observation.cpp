@@ -6,8 +6,9 @@
 
 namespace refloc {
 
-void make_observations(const std::vector<ReflectorDetection>& detections, const std::vector<ReflectorMatch>& matches,
-                       double min_sigma, std::vector<PointObservation>& out) {
+void make_observations(const std::vector<ReflectorDetection>& detections,
+                       const std::vector<ReflectorMatch>& matches, double min_sigma,
+                       std::vector<PointObservation>& out) {
   out.clear();
   for (const ReflectorMatch& m : matches) {
     if (m.detection_index < 0 || m.detection_index >= static_cast<int>(detections.size())) continue;

@@ -19,7 +19,7 @@ struct PoseSolution {
   int reflectors_used = 0;
   double rms_residual = 0.0;  ///< RMS of range residuals over the reflectors used [m]
   int iterations = 0;
-  std::vector<char> used;     ///< per match: 1 when it took part in the final solution
+  std::vector<char> used;  ///< per match: 1 when it took part in the final solution
 };
 
 }  // namespace refloc

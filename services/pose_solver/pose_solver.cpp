@@ -12,8 +12,8 @@ namespace refloc {
 PoseSolver::PoseSolver(const SolverConfig& config, const Pose2& robot_T_laser)
     : config_(config), robot_T_laser_(robot_T_laser) {}
 
-void PoseSolver::solve(const std::vector<ReflectorDetection>& detections, const std::vector<ReflectorMatch>& matches,
-                       PoseSolution& solution) {
+void PoseSolver::solve(const std::vector<ReflectorDetection>& detections,
+                       const std::vector<ReflectorMatch>& matches, PoseSolution& solution) {
   solution.status = SolveStatus::kLost;
   solution.reflectors_used = 0;
   solution.rms_residual = 0.0;
@@ -46,7 +46,8 @@ void PoseSolver::solve_paper(PoseSolution& solution) {
   const Eigen::Vector2d map_p_robot = paper_robot_position(map_p_laser, robot_heading, robot_T_laser_);
   solution.map_T_robot = Pose2{map_p_robot.x(), map_p_robot.y(), robot_heading};
   // The paper gives no covariance; the linearised one at its solution lets fusion weigh it.
-  const Eigen::FullPivLU<Eigen::Matrix3d> lu(pose_information(observations_, nullptr, solution.map_T_robot, robot_T_laser_));
+  const Eigen::FullPivLU<Eigen::Matrix3d> lu(
+      pose_information(observations_, nullptr, solution.map_T_robot, robot_T_laser_));
   if (lu.isInvertible()) solution.covariance = lu.inverse();
   finish(solution);
 }
@@ -61,7 +62,8 @@ void PoseSolver::solve_default(PoseSolution& solution) {
   int remaining = static_cast<int>(observations_.size());
   GaussNewtonResult gn;
   while (true) {
-    gn = refine_pose(observations_, &use_, robot_T_laser_, estimate, config_.max_iterations, config_.convergence_step);
+    gn = refine_pose(observations_, &use_, robot_T_laser_, estimate, config_.max_iterations,
+                     config_.convergence_step);
     solution.iterations += gn.iterations;
     if (!gn.converged) return;
     estimate = gn.map_T_robot;
@@ -93,17 +95,19 @@ void PoseSolver::finish(PoseSolution& solution) const {
     if (!use_[i]) continue;
     ++used;
     solution.used[static_cast<size_t>(observation_match_[i])] = 1;
-    const Eigen::Vector2d predicted = predict_laser_point(observations_[i], solution.map_T_robot, robot_T_laser_);
+    const Eigen::Vector2d predicted =
+        predict_laser_point(observations_[i], solution.map_T_robot, robot_T_laser_);
     const double range_error = observations_[i].range - predicted.norm();
     sum2 += range_error * range_error;
-    outlier_left = outlier_left ||
-                   normalised_residual(observations_[i], solution.map_T_robot, robot_T_laser_) > config_.outlier_threshold;
+    outlier_left = outlier_left || normalised_residual(observations_[i], solution.map_T_robot,
+                                                       robot_T_laser_) > config_.outlier_threshold;
   }
   solution.reflectors_used = used;
   solution.rms_residual = used > 0 ? std::sqrt(sum2 / used) : 0.0;
   if (!solution.covariance.allFinite() || used < 3) {
     solution.status = SolveStatus::kLost;
-  } else if (used < config_.min_reflectors_ok || solution.rms_residual > config_.max_rms_residual_ok || outlier_left) {
+  } else if (used < config_.min_reflectors_ok || solution.rms_residual > config_.max_rms_residual_ok ||
+             outlier_left) {
     solution.status = SolveStatus::kDegraded;
   } else {
     solution.status = SolveStatus::kOk;

@@ -7,7 +7,8 @@ namespace refloc {
 SolverServiceConfig parse_solver_service_config(const JsonConfig& config) {
   SolverServiceConfig s;
   SolverConfig& c = s.solver;
-  c.mode = config.choice("/mode", "default", {"default", "paper"}) == "paper" ? SolverMode::kPaper : SolverMode::kDefault;
+  c.mode = config.choice("/mode", "default", {"default", "paper"}) == "paper" ? SolverMode::kPaper
+                                                                              : SolverMode::kDefault;
   s.input_channel = config.string("/input_channel", s.input_channel);
   s.output_channel = config.string("/output_channel", s.output_channel);
   c.max_iterations = static_cast<int>(config.integer("/max_iterations", c.max_iterations, 1, 1000));

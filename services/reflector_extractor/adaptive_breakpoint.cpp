@@ -5,8 +5,7 @@
 
 namespace refloc {
 
-AdaptiveBreakpointClusterer::AdaptiveBreakpointClusterer(AdaptiveBreakpointConfig config)
-    : config_(config) {}
+AdaptiveBreakpointClusterer::AdaptiveBreakpointClusterer(AdaptiveBreakpointConfig config) : config_(config) {}
 
 double AdaptiveBreakpointClusterer::max_distance(double range_prev, double dphi) const {
   const double denominator = std::sin(config_.lambda - dphi);

@@ -14,7 +14,7 @@ namespace refloc {
 
 struct AdaptiveBreakpointConfig {
   double lambda = 10.0 * 3.14159265358979323846 / 180.0;  ///< auxiliary incidence angle [rad]
-  double range_sigma = 0.012;                              ///< range noise sigma_r [m]
+  double range_sigma = 0.012;                             ///< range noise sigma_r [m]
   /// Non-selected beams allowed inside a cluster. 0: any unselected beam ends the cluster
   /// (objects side by side at the same range always split); negative: unlimited, the
   /// paper's literal "screen, then cluster the remaining points".

@@ -91,7 +91,8 @@ bool fit_circle_known_radius(const std::vector<FitBeam>& beams, double radius,
       gradient += b.weight * jac * e;
     }
     // A whisker of damping keeps one-beam clusters (rank 1) solvable.
-    const Eigen::Matrix2d damped = information + Eigen::Matrix2d::Identity() * (1e-9 * information.trace() + 1e-12);
+    const Eigen::Matrix2d damped =
+        information + Eigen::Matrix2d::Identity() * (1e-9 * information.trace() + 1e-12);
     Eigen::Vector2d step = -damped.ldlt().solve(gradient);
     if (!step.allFinite()) return false;
     const double step_norm = step.norm();
@@ -116,15 +117,16 @@ bool fit_circle_known_radius(const std::vector<FitBeam>& beams, double radius,
   out.iterations = iteration;
   // A rank-deficient information (one beam) leaves the tangential direction unknown:
   // report a large, not an infinite, variance there.
-  const Eigen::Matrix2d regularised = information + Eigen::Matrix2d::Identity() * 1e-6 * std::max(information.trace(), 1.0);
+  const Eigen::Matrix2d regularised =
+      information + Eigen::Matrix2d::Identity() * 1e-6 * std::max(information.trace(), 1.0);
   out.covariance = information.determinant() > 1e-12 * information.trace() * information.trace()
                        ? Eigen::Matrix2d(information.inverse())
                        : Eigen::Matrix2d(regularised.inverse());
   return out.center.allFinite() && out.covariance.allFinite() && is_positive_definite(out.covariance);
 }
 
-bool fit_circle_free_radius(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center,
-                            double radius, const KnownRadiusFitConfig& config, CircleFit& out) {
+bool fit_circle_free_radius(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center, double radius,
+                            const KnownRadiusFitConfig& config, CircleFit& out) {
   if (beams.size() < 4) return false;
   Eigen::Vector3d params(center.x(), center.y(), radius);
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
@@ -140,7 +142,8 @@ bool fit_circle_free_radius(const std::vector<FitBeam>& beams, const Eigen::Vect
       information += b.weight * jac * jac.transpose();
       gradient += b.weight * jac * e;
     }
-    const Eigen::Matrix3d damped = information + Eigen::Matrix3d::Identity() * (1e-9 * information.trace() + 1e-12);
+    const Eigen::Matrix3d damped =
+        information + Eigen::Matrix3d::Identity() * (1e-9 * information.trace() + 1e-12);
     Eigen::Vector3d step = -damped.ldlt().solve(gradient);
     if (!step.allFinite()) return false;
     params += step;

@@ -10,16 +10,16 @@ namespace refloc {
 
 /// One beam of a cluster as the fits see it.
 struct FitBeam {
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();      ///< laser_p of the echo [m]
-  Eigen::Vector2d direction = Eigen::Vector2d::UnitX(); ///< unit beam direction
-  double range = 0.0;                                   ///< measured range [m]
-  double weight = 1.0;                                  ///< 1 / sigma_range^2 [1/m^2]
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();       ///< laser_p of the echo [m]
+  Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  ///< unit beam direction
+  double range = 0.0;                                    ///< measured range [m]
+  double weight = 1.0;                                   ///< 1 / sigma_range^2 [1/m^2]
 };
 
 struct CircleFit {
-  Eigen::Vector2d center = Eigen::Vector2d::Zero();   ///< [m]
-  double radius = 0.0;                                ///< [m]
-  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero(); ///< of center [m^2]
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();      ///< [m]
+  double radius = 0.0;                                   ///< [m]
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();  ///< of center [m^2]
   double radius_sigma = 0.0;  ///< standard deviation of radius, free-radius fits only [m]
   double chi2 = 0.0;          ///< sum of weighted squared residuals at the solution
   int iterations = 0;
@@ -47,8 +47,8 @@ bool fit_circle_known_radius(const std::vector<FitBeam>& beams, double radius,
 
 /// Same residuals with the radius free as well, started from (center, radius); fills
 /// radius and radius_sigma. Needs at least 4 beams.
-bool fit_circle_free_radius(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center,
-                            double radius, const KnownRadiusFitConfig& config, CircleFit& out);
+bool fit_circle_free_radius(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center, double radius,
+                            const KnownRadiusFitConfig& config, CircleFit& out);
 
 /// Range residual of one beam against a circle, with the incidence floor [m]; also its
 /// derivative with respect to the centre (d residual / d radius = -1 / cos).

@@ -130,7 +130,8 @@ void ReflectorExtractor::process_cluster_default(const LaserScan& scan, const Be
   const bool have_free = static_cast<int>(beams_.size()) >= config_.roundness.min_beams_for_radius_check &&
                          fit_circle_free_radius(beams_, fit.center, fit.radius, config_.fit, free_fit);
   const double flat_chi2 = flat_surface_chi2(beams_, config_.fit.min_incidence_cos);
-  switch (check_known_radius_roundness(beams_, fit, have_free ? &free_fit : nullptr, flat_chi2, config_.roundness)) {
+  switch (check_known_radius_roundness(beams_, fit, have_free ? &free_fit : nullptr, flat_chi2,
+                                       config_.roundness)) {
     case RoundnessVerdict::kRound:
       break;
     case RoundnessVerdict::kTooWide:
@@ -156,7 +157,8 @@ void ReflectorExtractor::process_cluster_default(const LaserScan& scan, const Be
       // step, uniformly: the fit's rank-deficient information says nothing useful there.
       const double step = std::abs(scan.angle_increment) * range;
       const double sigma_r = config_.clustering.range_sigma;
-      fit.covariance = sigma_r * sigma_r * along * along.transpose() + step * step / 12.0 * across * across.transpose();
+      fit.covariance =
+          sigma_r * sigma_r * along * along.transpose() + step * step / 12.0 * across * across.transpose();
     }
     const double sigma = config_.angle_sigma * range;
     fit.covariance += sigma * sigma * across * across.transpose();

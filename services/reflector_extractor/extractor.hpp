@@ -61,8 +61,8 @@ struct ExtractionStats {
   int rejected_occluded = 0;    ///< occluded or next to a dazzled beam
   int rejected_fit_failed = 0;
   int rejected() const {
-    return rejected_too_few_beams + rejected_too_wide + rejected_too_narrow + rejected_not_round + rejected_radius +
-           rejected_occluded + rejected_fit_failed;
+    return rejected_too_few_beams + rejected_too_wide + rejected_too_narrow + rejected_not_round +
+           rejected_radius + rejected_occluded + rejected_fit_failed;
   }
 };
 

@@ -27,9 +27,11 @@ ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& c) {
   e.reflector_radius = c.number("/reflector_radius_m", e.reflector_radius, 0.005, 1.0);
   e.min_beams = static_cast<int>(c.integer("/min_beams", e.min_beams, 1, 1000));
 
-  e.clustering.lambda = c.number("/clustering/lambda_deg", e.clustering.lambda / kDegToRad, 1.0, 89.0) * kDegToRad;
+  e.clustering.lambda =
+      c.number("/clustering/lambda_deg", e.clustering.lambda / kDegToRad, 1.0, 89.0) * kDegToRad;
   e.clustering.range_sigma = c.number("/clustering/range_sigma_m", e.clustering.range_sigma, 0.0, 0.5);
-  e.clustering.max_gap_beams = static_cast<int>(c.integer("/clustering/max_gap_beams", e.clustering.max_gap_beams, -1, 100));
+  e.clustering.max_gap_beams =
+      static_cast<int>(c.integer("/clustering/max_gap_beams", e.clustering.max_gap_beams, -1, 100));
 
   e.paper_drop_points = static_cast<int>(c.integer("/paper/drop_points", e.paper_drop_points, 0, 20));
   e.paper_roundness.offset = c.number("/paper/roundness_offset_m", e.paper_roundness.offset, -1.0, 1.0);
@@ -40,17 +42,20 @@ ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& c) {
   e.occlusion_margin = c.number("/default/occlusion_margin_m", e.occlusion_margin, 0.0, 10.0);
   e.reject_occluded = c.boolean("/default/reject_occluded", e.reject_occluded);
   e.reject_next_to_dazzled = c.boolean("/default/reject_next_to_dazzled", e.reject_next_to_dazzled);
-  e.fit.max_iterations = static_cast<int>(c.integer("/default/fit/max_iterations", e.fit.max_iterations, 1, 100));
+  e.fit.max_iterations =
+      static_cast<int>(c.integer("/default/fit/max_iterations", e.fit.max_iterations, 1, 100));
   e.fit.min_incidence_cos = c.number("/default/fit/min_incidence_cos", e.fit.min_incidence_cos, 0.01, 1.0);
   KnownRadiusRoundnessConfig& r = e.roundness;
   r.lateral_margin = c.number("/default/roundness/lateral_margin_m", r.lateral_margin, 0.0, 1.0);
-  r.min_lateral_fraction = c.number("/default/roundness/min_lateral_fraction", r.min_lateral_fraction, 0.0, 1.0);
-  r.max_rms_residual_sigmas = c.number("/default/roundness/max_rms_residual_sigmas", r.max_rms_residual_sigmas, 0.1, 100.0);
+  r.min_lateral_fraction =
+      c.number("/default/roundness/min_lateral_fraction", r.min_lateral_fraction, 0.0, 1.0);
+  r.max_rms_residual_sigmas =
+      c.number("/default/roundness/max_rms_residual_sigmas", r.max_rms_residual_sigmas, 0.1, 100.0);
   r.flat_chi2_margin = c.number("/default/roundness/flat_chi2_margin", r.flat_chi2_margin, 0.0, 1000.0);
   r.radius_tolerance = c.number("/default/roundness/radius_tolerance_m", r.radius_tolerance, 0.0, 1.0);
   r.radius_sigmas = c.number("/default/roundness/radius_sigmas", r.radius_sigmas, 0.0, 100.0);
-  r.min_beams_for_radius_check =
-      static_cast<int>(c.integer("/default/roundness/min_beams_for_radius_check", r.min_beams_for_radius_check, 4, 1000));
+  r.min_beams_for_radius_check = static_cast<int>(
+      c.integer("/default/roundness/min_beams_for_radius_check", r.min_beams_for_radius_check, 4, 1000));
   return out;
 }
 

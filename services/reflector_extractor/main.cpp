@@ -2,10 +2,10 @@
 // one output per scan, each detection motion-compensated to the scan's first beam with
 // the latest ODOMETRY twist.
 
-#include "common/service_command_line.hpp"
 #include "common/json_config.hpp"
 #include "common/lcm_conversions.hpp"
 #include "common/robot_config.hpp"
+#include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
 #include "reflector_extractor/extractor.hpp"
 #include "reflector_extractor/extractor_config_file.hpp"
@@ -31,7 +31,8 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     file.reject_unknown_keys();
   }
   Pose2 robot_T_laser;
-  if (config.motion_compensation && !robot_path.empty()) robot_T_laser = load_robot_config(robot_path).robot_T_laser;
+  if (config.motion_compensation && !robot_path.empty())
+    robot_T_laser = load_robot_config(robot_path).robot_T_laser;
   ReflectorExtractor extractor(config.extractor);
   spdlog::info("mode {}, energy threshold {:.0f}, radius {:.3f} m, motion compensation {}",
                config.extractor.mode == ExtractorConfig::Mode::kPaper ? "paper" : "default",
@@ -54,16 +55,17 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     detections = extractor.extract(scan);
     if (config.motion_compensation) {
       if (last_odometry && std::llabs(last_odometry->utime - scan.utime) <= max_age_us) {
-        compensate_motion(detections, scan.utime, BodyTwist{last_odometry->vx, last_odometry->vy, last_odometry->wz},
-                          robot_T_laser);
+        compensate_motion(detections, scan.utime,
+                          BodyTwist{last_odometry->vx, last_odometry->vy, last_odometry->wz}, robot_T_laser);
       } else {
         ++runtime.counter("scans_without_fresh_odometry");
       }
     }
     const ExtractionStats& stats = extractor.stats();
     runtime.counter("rejected_too_few_beams") += stats.rejected_too_few_beams;
-    runtime.counter("rejected_shape") += stats.rejected_too_wide + stats.rejected_too_narrow + stats.rejected_not_round +
-                                         stats.rejected_radius + stats.rejected_fit_failed;
+    runtime.counter("rejected_shape") += stats.rejected_too_wide + stats.rejected_too_narrow +
+                                         stats.rejected_not_round + stats.rejected_radius +
+                                         stats.rejected_fit_failed;
     runtime.counter("rejected_occluded") += stats.rejected_occluded;
     if (detections.empty()) ++runtime.counter("scans_without_reflectors");
 
@@ -91,9 +93,10 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  refloc::ServiceCommandLine cli("reflector_extractor",
-                                 "reflector_extractor: laser scans in, retro-reflector detections out (LCM service)",
-                                 "deploy/config/reflector_extractor.json");
+  refloc::ServiceCommandLine cli(
+      "reflector_extractor",
+      "reflector_extractor: laser scans in, retro-reflector detections out (LCM service)",
+      "deploy/config/reflector_extractor.json");
   cli.add_robot_option("robot config with the laser mount (robot_T_laser)");
   return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path, cli.robot_path); });
 }

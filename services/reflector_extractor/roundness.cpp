@@ -7,8 +7,8 @@
 
 namespace refloc {
 
-double paper_roundness_index(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center,
-                             double radius, int drop_points) {
+double paper_roundness_index(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center, double radius,
+                             int drop_points) {
   const int n = static_cast<int>(beams.size());
   const int begin = std::max(drop_points, 0);
   const int end = n - begin;
@@ -38,7 +38,8 @@ RoundnessVerdict check_known_radius_roundness(const std::vector<FitBeam>& beams,
   if (n > 2) {
     const double rms = std::sqrt(known_fit.chi2 / static_cast<double>(n - 2));
     if (rms > config.max_rms_residual_sigmas) return RoundnessVerdict::kResidual;
-    if (flat_chi2 >= 0.0 && known_fit.chi2 - flat_chi2 > config.flat_chi2_margin) return RoundnessVerdict::kFlat;
+    if (flat_chi2 >= 0.0 && known_fit.chi2 - flat_chi2 > config.flat_chi2_margin)
+      return RoundnessVerdict::kFlat;
   }
   if (free_fit != nullptr && static_cast<int>(n) >= config.min_beams_for_radius_check) {
     const double tolerance = std::max(config.radius_tolerance, config.radius_sigmas * free_fit->radius_sigma);
@@ -81,10 +82,12 @@ double flat_surface_chi2(const std::vector<FitBeam>& beams, double min_incidence
   return chi2;
 }
 
-double mean_abs_range_residual(const std::vector<FitBeam>& beams, const CircleFit& fit, double min_incidence_cos) {
+double mean_abs_range_residual(const std::vector<FitBeam>& beams, const CircleFit& fit,
+                               double min_incidence_cos) {
   if (beams.empty()) return 0.0;
   double sum = 0.0;
-  for (const FitBeam& b : beams) sum += std::abs(range_residual(b, fit.center, fit.radius, min_incidence_cos));
+  for (const FitBeam& b : beams)
+    sum += std::abs(range_residual(b, fit.center, fit.radius, min_incidence_cos));
   return sum / static_cast<double>(beams.size());
 }
 

@@ -11,8 +11,8 @@ namespace refloc {
 /// The paper's roundness index d-bar: mean |distance(point, center) - radius| over the
 /// beams after dropping the first and last drop_points (edge beams are partial hits) [m].
 /// Negative when fewer than one beam would remain.
-double paper_roundness_index(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center,
-                             double radius, int drop_points);
+double paper_roundness_index(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center, double radius,
+                             int drop_points);
 
 /// The paper's acceptance line d-bar <= offset + slope * range (the fitted line raised by
 /// 30 mm in §3.4).
@@ -21,8 +21,8 @@ struct RoundnessLine {
   // d564682: fitted 8.0 mm - 0.46 mm/m, raised 30 mm). Unlike the paper's Figure 9, d-bar
   // does not grow with distance here: fewer beams far away, so the free circle fits them
   // ever more closely (three beams with one dropped each side: d-bar = 0).
-  double offset = 0.0380;    ///< [m]
-  double slope = -0.00046;   ///< [m per m of range]
+  double offset = 0.0380;   ///< [m]
+  double slope = -0.00046;  ///< [m per m of range]
   bool accepts(double d_bar, double range) const { return d_bar <= offset + slope * range; }
 };
 
@@ -64,6 +64,7 @@ double flat_surface_chi2(const std::vector<FitBeam>& beams, double min_incidence
 double lateral_extent(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center);
 
 /// Mean |range residual| of the beams against a fitted circle [m].
-double mean_abs_range_residual(const std::vector<FitBeam>& beams, const CircleFit& fit, double min_incidence_cos);
+double mean_abs_range_residual(const std::vector<FitBeam>& beams, const CircleFit& fit,
+                               double min_incidence_cos);
 
 }  // namespace refloc

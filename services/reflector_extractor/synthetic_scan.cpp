@@ -41,7 +41,8 @@ void intersect_segment(const SyntheticSegment& s, const Eigen::Vector2d& u, Hit&
 
 }  // namespace
 
-LaserScan render_synthetic_scan(const SyntheticScene& scene, const SyntheticScanConfig& config, std::mt19937& rng) {
+LaserScan render_synthetic_scan(const SyntheticScene& scene, const SyntheticScanConfig& config,
+                                std::mt19937& rng) {
   LaserScan scan;
   scan.utime = config.utime;
   scan.receive_utime = config.utime + 20'000;

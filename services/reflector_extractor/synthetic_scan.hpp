@@ -23,7 +23,7 @@ struct SyntheticCylinder {
 struct SyntheticSegment {
   Eigen::Vector2d laser_p_a = Eigen::Vector2d::Zero();  ///< [m]
   Eigen::Vector2d laser_p_b = Eigen::Vector2d::Zero();  ///< [m]
-  double rssi_8bit = 60.0;  ///< [8-bit scale]
+  double rssi_8bit = 60.0;                              ///< [8-bit scale]
 };
 
 struct SyntheticScene {
@@ -35,9 +35,9 @@ struct SyntheticScanConfig {
   int num_beams = 541;
   double start_angle = -135.0 * 3.14159265358979323846 / 180.0;   ///< [rad]
   double angle_increment = 0.5 * 3.14159265358979323846 / 180.0;  ///< [rad]
-  double time_increment = 1.0 / (50.0 * 720.0);  ///< 50 Hz rotation, 720 steps a turn [s]
-  double range_sigma = 0.012;   ///< [m]
-  double angle_sigma = 0.0;     ///< beam direction jitter [rad]
+  double time_increment = 1.0 / (50.0 * 720.0);                   ///< 50 Hz rotation, 720 steps a turn [s]
+  double range_sigma = 0.012;                                     ///< [m]
+  double angle_sigma = 0.0;                                       ///< beam direction jitter [rad]
   double rssi_sigma_8bit = 4.0;
   /// RSSI = rssi_8bit * (grazing_rssi_fraction + (1 - grazing_rssi_fraction) * cos(incidence)).
   double grazing_rssi_fraction = 0.6;
@@ -46,6 +46,7 @@ struct SyntheticScanConfig {
 };
 
 /// Render one scan (16-bit RSSI, like the LMS100) of scene; noise from rng.
-LaserScan render_synthetic_scan(const SyntheticScene& scene, const SyntheticScanConfig& config, std::mt19937& rng);
+LaserScan render_synthetic_scan(const SyntheticScene& scene, const SyntheticScanConfig& config,
+                                std::mt19937& rng);
 
 }  // namespace refloc

@@ -14,8 +14,8 @@ constexpr std::array<std::array<int, 3>, 6> kPermutations = {
 
 }  // namespace
 
-GlobalRelocalizer::GlobalRelocalizer(const ReflectorMap& map, const MapGrid& grid, const MapTriangleIndex& index,
-                                     const MatcherConfig& config)
+GlobalRelocalizer::GlobalRelocalizer(const ReflectorMap& map, const MapGrid& grid,
+                                     const MapTriangleIndex& index, const MatcherConfig& config)
     : map_(map), config_(config), index_(index), verifier_(map, grid, config) {}
 
 void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection>& detections) {
@@ -38,9 +38,10 @@ void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection
     for (size_t j = i + 1; j < n && !full(); ++j) {
       for (size_t k = j + 1; k < n && !full(); ++k) {
         const std::array<int, 3> det = {nearest_[i], nearest_[j], nearest_[k]};
-        const std::array<Eigen::Vector2d, 3> laser_p = {detections[static_cast<size_t>(det[0])].laser_p_center,
-                                                        detections[static_cast<size_t>(det[1])].laser_p_center,
-                                                        detections[static_cast<size_t>(det[2])].laser_p_center};
+        const std::array<Eigen::Vector2d, 3> laser_p = {
+            detections[static_cast<size_t>(det[0])].laser_p_center,
+            detections[static_cast<size_t>(det[1])].laser_p_center,
+            detections[static_cast<size_t>(det[2])].laser_p_center};
         const SortedSides s = sorted_sides(laser_p);
         if (s.side[0] < config_.min_triangle_side - tol) continue;
         index_.for_each_candidate(s.side, [&](const IndexedTriangle& tri) {
@@ -51,20 +52,23 @@ void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection
             if (full()) return;
             bool sides_agree = true;
             for (int m = 0; m < 3 && sides_agree; ++m) {
-              sides_agree = std::abs(s.side[static_cast<size_t>(m)] - tri.side[static_cast<size_t>(perm[static_cast<size_t>(m)])]) <= tol;
+              sides_agree = std::abs(s.side[static_cast<size_t>(m)] -
+                                     tri.side[static_cast<size_t>(perm[static_cast<size_t>(m)])]) <= tol;
             }
             if (!sides_agree) continue;
             RigidFit2d fit;
             std::array<Eigen::Vector2d, 3> map_p;
             for (size_t m = 0; m < 3; ++m) {
-              map_p[m] = map_.reflectors[static_cast<size_t>(tri.opposite[static_cast<size_t>(perm[m])])].map_p_center;
+              map_p[m] = map_.reflectors[static_cast<size_t>(tri.opposite[static_cast<size_t>(perm[m])])]
+                             .map_p_center;
               fit.add(laser_p[static_cast<size_t>(s.opposite[m])], map_p[m]);
             }
             Pose2 map_T_laser;
             if (!fit.solve(map_T_laser)) continue;
             bool fits = true;
             for (size_t m = 0; m < 3 && fits; ++m) {
-              fits = (map_T_laser * laser_p[static_cast<size_t>(s.opposite[m])] - map_p[m]).squaredNorm() <= max_err2;
+              fits = (map_T_laser * laser_p[static_cast<size_t>(s.opposite[m])] - map_p[m]).squaredNorm() <=
+                     max_err2;
             }
             if (fits) hypotheses_.push_back(map_T_laser);
           }
@@ -81,7 +85,9 @@ void GlobalRelocalizer::remove_duplicate_hypotheses() {
   keyed_.clear();
   for (size_t i = 0; i < hypotheses_.size(); ++i) {
     const Pose2& h = hypotheses_[i];
-    const auto bin = [](double v, double width) { return static_cast<uint64_t>(std::llround(v / width) & 0x1FFFFF); };
+    const auto bin = [](double v, double width) {
+      return static_cast<uint64_t>(std::llround(v / width) & 0x1FFFFF);
+    };
     keyed_.push_back({bin(h.x, kBinXy) | (bin(h.y, kBinXy) << 21) | (bin(h.theta, kBinTheta) << 42), i});
   }
   std::sort(keyed_.begin(), keyed_.end());
@@ -126,7 +132,8 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   double runner_up = -1e300;
   bool rival = false;
   for (const Scored& s : scored_) {
-    if (approx_equal(s.map_T_laser, best_pose, config_.distinct_pose_distance, config_.distinct_pose_angle)) continue;
+    if (approx_equal(s.map_T_laser, best_pose, config_.distinct_pose_distance, config_.distinct_pose_angle))
+      continue;
     runner_up = std::max(runner_up, s.score);
     const double margin = best_score - s.score;
     rival = rival || margin < (1.0 - config_.ambiguity_ratio) * best_matched ||

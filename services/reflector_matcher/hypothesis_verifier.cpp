@@ -6,7 +6,8 @@
 
 namespace refloc {
 
-HypothesisVerifier::HypothesisVerifier(const ReflectorMap& map, const MapGrid& grid, const MatcherConfig& config)
+HypothesisVerifier::HypothesisVerifier(const ReflectorMap& map, const MapGrid& grid,
+                                       const MatcherConfig& config)
     : map_(map), grid_(grid), config_(config) {}
 
 int HypothesisVerifier::associate(const Pose2& map_T_laser, const std::vector<ReflectorDetection>& detections,
@@ -26,10 +27,13 @@ int HypothesisVerifier::associate(const Pose2& map_T_laser, const std::vector<Re
   detection_used_.assign(detections.size(), 0);
   associations_.clear();
   for (const Candidate& c : candidates_) {
-    if (predicted_matched_[static_cast<size_t>(c.predicted_index)] || detection_used_[static_cast<size_t>(c.detection_index)]) continue;
+    if (predicted_matched_[static_cast<size_t>(c.predicted_index)] ||
+        detection_used_[static_cast<size_t>(c.detection_index)])
+      continue;
     predicted_matched_[static_cast<size_t>(c.predicted_index)] = 1;
     detection_used_[static_cast<size_t>(c.detection_index)] = 1;
-    associations_.push_back({c.detection_index, predicted_[static_cast<size_t>(c.predicted_index)].map_index});
+    associations_.push_back(
+        {c.detection_index, predicted_[static_cast<size_t>(c.predicted_index)].map_index});
   }
   return static_cast<int>(associations_.size());
 }
@@ -43,14 +47,15 @@ bool HypothesisVerifier::refit(const std::vector<ReflectorDetection>& detections
   return fit.count() >= 3 && fit.solve(map_T_laser);
 }
 
-Verification HypothesisVerifier::verify(const Pose2& map_T_laser, const std::vector<ReflectorDetection>& detections) {
+Verification HypothesisVerifier::verify(const Pose2& map_T_laser,
+                                        const std::vector<ReflectorDetection>& detections) {
   Verification v;
   v.map_T_laser = map_T_laser;
   if (associate(map_T_laser, detections, config_.verify_coarse_gate) >= 3) refit(detections, v.map_T_laser);
   v.matched = associate(v.map_T_laser, detections, config_.verify_fine_gate);
   for (size_t k = 0; k < predicted_.size(); ++k) {
-    if (predicted_[k].in_view && !predicted_matched_[k] && predicted_[k].range <= config_.missed_penalty_max_range &&
-        !is_shadowed(map_, predicted_, k)) {
+    if (predicted_[k].in_view && !predicted_matched_[k] &&
+        predicted_[k].range <= config_.missed_penalty_max_range && !is_shadowed(map_, predicted_, k)) {
       ++v.missed;
     }
   }

@@ -5,11 +5,11 @@
 #include "reflector_matcher/reflector_matcher.hpp"
 #include "reflector_matcher/startup_relocalization.hpp"
 
-#include "common/service_command_line.hpp"
-#include "common/lcm_conversions.hpp"
 #include "common/json_config.hpp"
+#include "common/lcm_conversions.hpp"
 #include "common/reflector_map.hpp"
 #include "common/robot_config.hpp"
+#include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
 
 #include <refloc/pose2d_t.hpp>
@@ -39,9 +39,12 @@ PosePrior prior_from_robot_pose(const pose2d_t& pose, const Pose2& robot_T_laser
 
 int8_t to_message_status(MatchStatus s) {
   switch (s) {
-    case MatchStatus::kOk: return reflector_matches_t::STATUS_OK;
-    case MatchStatus::kAmbiguous: return reflector_matches_t::STATUS_AMBIGUOUS;
-    case MatchStatus::kLost: break;
+    case MatchStatus::kOk:
+      return reflector_matches_t::STATUS_OK;
+    case MatchStatus::kAmbiguous:
+      return reflector_matches_t::STATUS_AMBIGUOUS;
+    case MatchStatus::kLost:
+      break;
   }
   return reflector_matches_t::STATUS_LOST;
 }
@@ -54,7 +57,8 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     config = parse_matcher_service_config(file, std::filesystem::path(config_path).parent_path().string());
     file.reject_unknown_keys();
   } else {
-    config = parse_matcher_service_config(JsonConfig(nlohmann::json::object(), "(defaults)"), "deploy/config");
+    config =
+        parse_matcher_service_config(JsonConfig(nlohmann::json::object(), "(defaults)"), "deploy/config");
   }
   if (!map_override.empty()) config.map_file = map_override;
   const Pose2 robot_T_laser = load_robot_config(robot_path).robot_T_laser;
@@ -82,16 +86,18 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     if (!prior_allowed) {
       ++runtime.counter("startup_scans_without_prior");
     } else if (last_pose && last_pose->status == pose2d_t::STATUS_OK &&
-        std::llabs(msg.utime - last_pose->utime) <= max_age_us) {
+               std::llabs(msg.utime - last_pose->utime) <= max_age_us) {
       prior = prior_from_robot_pose(*last_pose, robot_T_laser);
-    } else if (config.use_own_pose_as_prior && last_own_ok && std::llabs(msg.utime - last_own_ok->first) <= max_age_us) {
+    } else if (config.use_own_pose_as_prior && last_own_ok &&
+               std::llabs(msg.utime - last_own_ok->first) <= max_age_us) {
       const double sxy2 = config.own_prior_sigma_xy * config.own_prior_sigma_xy;
       const double st2 = config.own_prior_sigma_theta * config.own_prior_sigma_theta;
       prior = PosePrior{last_own_ok->second, Eigen::Vector3d(sxy2, sxy2, st2).asDiagonal()};
     }
     matcher.match(detections, prior ? &*prior : nullptr, result);
     startup.on_result(result.status, result.mode);
-    if (!was_done && startup.relocalized()) spdlog::info("relocalized globally after start; tracking from now on");
+    if (!was_done && startup.relocalized())
+      spdlog::info("relocalized globally after start; tracking from now on");
     if (!was_done && startup.gave_up()) {
       spdlog::warn("no global relocalization within {:.1f} s of start: tracking from the POSE prior",
                    config.relocalize_on_start);
@@ -111,7 +117,8 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     out.utime = msg.utime;
     out.scan_counter = msg.scan_counter;
     out.status = to_message_status(result.status);
-    out.mode = result.mode == MatchMode::kTracking ? reflector_matches_t::MODE_TRACKING : reflector_matches_t::MODE_GLOBAL;
+    out.mode = result.mode == MatchMode::kTracking ? reflector_matches_t::MODE_TRACKING
+                                                   : reflector_matches_t::MODE_GLOBAL;
     out.hypothesis_score = result.hypothesis_score;
     out.runner_up_score = result.runner_up_score;
     out.prior_x = result.map_T_laser.x;
@@ -138,7 +145,8 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  refloc::ServiceCommandLine cli("reflector_matcher", "Reflector matcher: REFLECTORS (+ POSE prior) -> REFLECTOR_MATCHES",
+  refloc::ServiceCommandLine cli("reflector_matcher",
+                                 "Reflector matcher: REFLECTORS (+ POSE prior) -> REFLECTOR_MATCHES",
                                  "deploy/config/reflector_matcher.json");
   cli.add_robot_option("robot geometry file with /laser_mount (JSON)");
   std::string map_override;

@@ -53,7 +53,8 @@ void MapGrid::query(const Eigen::Vector2d& centre, double radius, std::vector<in
       const size_t c = static_cast<size_t>(cy) * static_cast<size_t>(nx_) + static_cast<size_t>(cx);
       for (uint32_t k = cell_begin_[c]; k < cell_begin_[c + 1]; ++k) {
         const int i = items_[k];
-        if ((map_->reflectors[static_cast<size_t>(i)].map_p_center - centre).squaredNorm() <= r2) out.push_back(i);
+        if ((map_->reflectors[static_cast<size_t>(i)].map_p_center - centre).squaredNorm() <= r2)
+          out.push_back(i);
       }
     }
   }

@@ -24,7 +24,8 @@ class MapGrid {
   double cell_size_;
   Eigen::Vector2d origin_;
   int nx_ = 1, ny_ = 1;
-  std::vector<uint32_t> cell_begin_;  ///< CSR: reflectors of cell c are items_[cell_begin_[c] .. cell_begin_[c+1])
+  std::vector<uint32_t>
+      cell_begin_;  ///< CSR: reflectors of cell c are items_[cell_begin_[c] .. cell_begin_[c+1])
   std::vector<int> items_;
 };
 

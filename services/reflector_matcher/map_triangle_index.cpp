@@ -7,29 +7,31 @@
 
 namespace refloc {
 bool enumerate_map_triangles(const ReflectorMap& map, double min_side, double max_side, size_t max_triangles,
-                       std::vector<IndexedTriangle>& out) {
+                             std::vector<IndexedTriangle>& out) {
   out.clear();
   const MapGrid grid(map, max_side);
   std::vector<int> near;
   const auto& r = map.reflectors;
   const double max2 = max_side * max_side, min2 = min_side * min_side;
   const auto fits = [&](int i, int j) {
-    const double d2 = (r[static_cast<size_t>(i)].map_p_center - r[static_cast<size_t>(j)].map_p_center).squaredNorm();
+    const double d2 =
+        (r[static_cast<size_t>(i)].map_p_center - r[static_cast<size_t>(j)].map_p_center).squaredNorm();
     return d2 <= max2 && d2 >= min2;
   };
   for (int i = 0; i < static_cast<int>(r.size()); ++i) {
     near.clear();
     grid.query(r[static_cast<size_t>(i)].map_p_center, max_side, near);
     // Each triangle once: i is its lowest index.
-    near.erase(std::remove_if(near.begin(), near.end(), [&](int j) { return j <= i || !fits(i, j); }), near.end());
+    near.erase(std::remove_if(near.begin(), near.end(), [&](int j) { return j <= i || !fits(i, j); }),
+               near.end());
     std::sort(near.begin(), near.end());
     for (size_t a = 0; a < near.size(); ++a) {
       for (size_t b = a + 1; b < near.size(); ++b) {
         const int j = near[a], k = near[b];
         if (!fits(j, k)) continue;
-        const SortedSides s = sorted_sides({r[static_cast<size_t>(i)].map_p_center,
-                                            r[static_cast<size_t>(j)].map_p_center,
-                                            r[static_cast<size_t>(k)].map_p_center});
+        const SortedSides s =
+            sorted_sides({r[static_cast<size_t>(i)].map_p_center, r[static_cast<size_t>(j)].map_p_center,
+                          r[static_cast<size_t>(k)].map_p_center});
         const int ids[3] = {i, j, k};
         IndexedTriangle t;
         for (int m = 0; m < 3; ++m) {
@@ -44,10 +46,11 @@ bool enumerate_map_triangles(const ReflectorMap& map, double min_side, double ma
   return true;
 }
 
-MapTriangleIndex::MapTriangleIndex(const ReflectorMap& map, double tolerance, double min_side, double max_side,
-                                   size_t max_triangles)
+MapTriangleIndex::MapTriangleIndex(const ReflectorMap& map, double tolerance, double min_side,
+                                   double max_side, size_t max_triangles)
     : tolerance_(tolerance), cell_size_(2.0 * tolerance), max_side_(max_side) {
-  while (!enumerate_map_triangles(map, min_side, max_side_, max_triangles, triangles_) && max_side_ > min_side) {
+  while (!enumerate_map_triangles(map, min_side, max_side_, max_triangles, triangles_) &&
+         max_side_ > min_side) {
     max_side_ *= 0.8;
   }
   std::vector<std::pair<uint64_t, uint32_t>> keyed(triangles_.size());

@@ -15,7 +15,7 @@
 namespace refloc {
 
 struct IndexedTriangle {
-  std::array<float, 3> side{};      ///< [m], ascending
+  std::array<float, 3> side{};        ///< [m], ascending
   std::array<int32_t, 3> opposite{};  ///< map reflector index opposite side[k]
 };
 
@@ -46,7 +46,7 @@ class MapTriangleIndex {
   double tolerance_;
   double cell_size_;
   double max_side_;
-  std::vector<IndexedTriangle> triangles_;                          ///< sorted by cell key
+  std::vector<IndexedTriangle> triangles_;                             ///< sorted by cell key
   std::unordered_map<uint64_t, std::pair<uint32_t, uint32_t>> cells_;  ///< key -> [begin, end)
 };
 
@@ -66,7 +66,8 @@ void MapTriangleIndex::for_each_candidate(const std::array<double, 3>& sides, Fn
         if (it == cells_.end()) continue;
         for (uint32_t t = it->second.first; t < it->second.second; ++t) {
           const IndexedTriangle& tri = triangles_[t];
-          if (std::abs(tri.side[0] - sides[0]) <= tolerance_ && std::abs(tri.side[1] - sides[1]) <= tolerance_ &&
+          if (std::abs(tri.side[0] - sides[0]) <= tolerance_ &&
+              std::abs(tri.side[1] - sides[1]) <= tolerance_ &&
               std::abs(tri.side[2] - sides[2]) <= tolerance_) {
             fn(tri);
           }

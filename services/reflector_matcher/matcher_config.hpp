@@ -19,38 +19,38 @@ struct MatcherConfig {
   double field_of_view = 270.0 * M_PI / 180.0;  ///< full opening angle [rad]
 
   // Paper mode (§3.5).
-  double paper_side_tolerance = 0.05;                  ///< [m] on each adjacent side
-  double paper_angle_tolerance = 2.0 * M_PI / 180.0;   ///< [rad] on the largest angle
+  double paper_side_tolerance = 0.05;                 ///< [m] on each adjacent side
+  double paper_angle_tolerance = 2.0 * M_PI / 180.0;  ///< [rad] on the largest angle
 
   // Tracking association from a prior.
-  double prior_min_sigma_xy = 0.05;                    ///< floor of the prior's std dev [m]
-  double prior_min_sigma_theta = 1.0 * M_PI / 180.0;   ///< floor of the prior's std dev [rad]
-  double tracking_gate_chi2 = 13.8;                    ///< Mahalanobis^2 gate, 2 dof 99.9 %
-  double detection_min_sigma = 0.005;                  ///< floor of a detection's std dev [m]
+  double prior_min_sigma_xy = 0.05;                   ///< floor of the prior's std dev [m]
+  double prior_min_sigma_theta = 1.0 * M_PI / 180.0;  ///< floor of the prior's std dev [rad]
+  double tracking_gate_chi2 = 13.8;                   ///< Mahalanobis^2 gate, 2 dof 99.9 %
+  double detection_min_sigma = 0.005;                 ///< floor of a detection's std dev [m]
 
   // Global relocalization.
-  double triangle_side_tolerance = 0.08;  ///< [m] per sorted side when looking up map triangles
-  double min_triangle_side = 0.3;         ///< [m] shorter sides give poorly conditioned headings
-  double max_triangle_side = 40.0;        ///< [m] index only triangles a scan can see: 2 * max_range
-  int max_index_triangles = 5000000;      ///< cap on the index size; max_triangle_side shrinks to meet it
-  int max_triple_detections = 20;         ///< only the nearest N detections form triples
-  int max_hypotheses = 4000;              ///< per scan, bounds the relocalization time
-  double hypothesis_fit_max_error = 0.15; ///< [m] a triangle whose rigid fit is worse is no hypothesis
-  double verify_coarse_gate = 0.5;        ///< [m] first association of a hypothesis
-  double verify_fine_gate = 0.15;         ///< [m] after refitting with all coarse matches
-  double missed_penalty = 0.5;            ///< score lost per expected, unoccluded, unseen reflector
+  double triangle_side_tolerance = 0.08;   ///< [m] per sorted side when looking up map triangles
+  double min_triangle_side = 0.3;          ///< [m] shorter sides give poorly conditioned headings
+  double max_triangle_side = 40.0;         ///< [m] index only triangles a scan can see: 2 * max_range
+  int max_index_triangles = 5000000;       ///< cap on the index size; max_triangle_side shrinks to meet it
+  int max_triple_detections = 20;          ///< only the nearest N detections form triples
+  int max_hypotheses = 4000;               ///< per scan, bounds the relocalization time
+  double hypothesis_fit_max_error = 0.15;  ///< [m] a triangle whose rigid fit is worse is no hypothesis
+  double verify_coarse_gate = 0.5;         ///< [m] first association of a hypothesis
+  double verify_fine_gate = 0.15;          ///< [m] after refitting with all coarse matches
+  double missed_penalty = 0.5;             ///< score lost per expected, unoccluded, unseen reflector
   /// Reflectors farther than this are not expected to be detected: at 0.5 deg a 120 mm
   /// cylinder spans fewer than 2 beams beyond ~7 m, which the extractor may reject [m].
   double missed_penalty_max_range = 8.0;
-  double unexplained_penalty = 0.25;      ///< score lost per detection no map reflector explains
-  double min_explained_fraction = 0.6;    ///< of the detections, for a global OK
+  double unexplained_penalty = 0.25;    ///< score lost per detection no map reflector explains
+  double min_explained_fraction = 0.6;  ///< of the detections, for a global OK
   /// AMBIGUOUS when best - runner-up < (1 - ratio) * (detections the best explains): with no
   /// penalties this is runner-up >= ratio * best.
   double ambiguity_ratio = 0.8;
   /// A pose explaining as many detections as the best is a rival unless the best scores at
   /// least this much higher (0.5 per unseen reflector: 2.0 = four more unseen).
   double ambiguity_missed_margin = 2.0;
-  double distinct_pose_distance = 0.2;    ///< [m] a runner-up must differ at least this much ...
+  double distinct_pose_distance = 0.2;              ///< [m] a runner-up must differ at least this much ...
   double distinct_pose_angle = 5.0 * M_PI / 180.0;  ///< [rad] ... or this much from the best
 
   int min_matches = 3;  ///< fewer explained detections -> LOST

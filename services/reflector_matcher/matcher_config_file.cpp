@@ -15,14 +15,15 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
   if (map_path.is_relative() && !base_dir.empty()) map_path = std::filesystem::path(base_dir) / map_path;
   s.map_file = map_path.lexically_normal().string();
   m.mode = config.choice("/mode", "default", {"default", "paper"}) == "paper" ? MatcherMode::kPaper
-                                                                                : MatcherMode::kDefault;
+                                                                              : MatcherMode::kDefault;
   s.input_channel = config.string("/input_channel", s.input_channel);
   s.prior_channel = config.string("/prior_channel", s.prior_channel);
   s.output_channel = config.string("/output_channel", s.output_channel);
   s.prior_max_age = config.number("/prior_max_age_s", s.prior_max_age, 0.0, 10.0);
   s.use_own_pose_as_prior = config.boolean("/use_own_pose_as_prior", s.use_own_pose_as_prior);
   s.own_prior_sigma_xy = config.number("/own_prior_sigma_m", s.own_prior_sigma_xy, 0.001, 10.0);
-  s.own_prior_sigma_theta = config.number("/own_prior_sigma_deg", s.own_prior_sigma_theta / kDeg, 0.01, 90.0) * kDeg;
+  s.own_prior_sigma_theta =
+      config.number("/own_prior_sigma_deg", s.own_prior_sigma_theta / kDeg, 0.01, 90.0) * kDeg;
   s.relocalize_on_start = config.number("/relocalize_on_start_s", s.relocalize_on_start, 0.0, 60.0);
 
   m.min_range = config.number("/sensor/min_range_m", m.min_range, 0.0, 100.0);
@@ -31,7 +32,8 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
   if (m.min_range >= m.max_range) config.fail("/sensor/min_range_m", "must be below /sensor/max_range_m");
 
   m.paper_side_tolerance = config.number("/paper/side_tolerance_m", m.paper_side_tolerance, 0.001, 2.0);
-  m.paper_angle_tolerance = config.number("/paper/angle_tolerance_deg", m.paper_angle_tolerance / kDeg, 0.01, 45.0) * kDeg;
+  m.paper_angle_tolerance =
+      config.number("/paper/angle_tolerance_deg", m.paper_angle_tolerance / kDeg, 0.01, 45.0) * kDeg;
 
   m.prior_min_sigma_xy = config.number("/tracking/prior_min_sigma_m", m.prior_min_sigma_xy, 0.0, 10.0);
   m.prior_min_sigma_theta =
@@ -42,22 +44,26 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
       static_cast<int>(config.integer("/tracking/max_unexplained", m.tracking_max_unexplained, 0, 1000));
   m.tracking_min_score = config.number("/tracking/min_score", m.tracking_min_score, -1000.0, 1000.0);
 
-  m.triangle_side_tolerance = config.number("/relocalization/side_tolerance_m", m.triangle_side_tolerance, 0.001, 2.0);
+  m.triangle_side_tolerance =
+      config.number("/relocalization/side_tolerance_m", m.triangle_side_tolerance, 0.001, 2.0);
   m.min_triangle_side = config.number("/relocalization/min_triangle_side_m", m.min_triangle_side, 0.0, 50.0);
   m.max_triangle_side = config.number("/relocalization/max_triangle_side_m", 2.0 * m.max_range, 0.1, 1000.0);
   m.max_index_triangles = static_cast<int>(
       config.integer("/relocalization/max_index_triangles", m.max_index_triangles, 1000, 100000000));
-  m.max_triple_detections =
-      static_cast<int>(config.integer("/relocalization/max_triple_detections", m.max_triple_detections, 3, 100));
-  m.max_hypotheses = static_cast<int>(config.integer("/relocalization/max_hypotheses", m.max_hypotheses, 1, 10000000));
+  m.max_triple_detections = static_cast<int>(
+      config.integer("/relocalization/max_triple_detections", m.max_triple_detections, 3, 100));
+  m.max_hypotheses =
+      static_cast<int>(config.integer("/relocalization/max_hypotheses", m.max_hypotheses, 1, 10000000));
   m.hypothesis_fit_max_error =
       config.number("/relocalization/hypothesis_fit_max_error_m", m.hypothesis_fit_max_error, 0.001, 5.0);
-  m.verify_coarse_gate = config.number("/relocalization/verify_coarse_gate_m", m.verify_coarse_gate, 0.001, 5.0);
+  m.verify_coarse_gate =
+      config.number("/relocalization/verify_coarse_gate_m", m.verify_coarse_gate, 0.001, 5.0);
   m.verify_fine_gate = config.number("/relocalization/verify_fine_gate_m", m.verify_fine_gate, 0.001, 5.0);
   m.missed_penalty = config.number("/relocalization/missed_penalty", m.missed_penalty, 0.0, 10.0);
   m.missed_penalty_max_range =
       config.number("/relocalization/missed_penalty_max_range_m", m.missed_penalty_max_range, 0.0, 100.0);
-  m.unexplained_penalty = config.number("/relocalization/unexplained_penalty", m.unexplained_penalty, 0.0, 10.0);
+  m.unexplained_penalty =
+      config.number("/relocalization/unexplained_penalty", m.unexplained_penalty, 0.0, 10.0);
   m.min_explained_fraction =
       config.number("/relocalization/min_explained_fraction", m.min_explained_fraction, 0.0, 1.0);
   m.global_min_score = config.number("/relocalization/min_score", m.global_min_score, -1000.0, 1000.0);
@@ -67,7 +73,8 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
   m.distinct_pose_distance =
       config.number("/relocalization/distinct_pose_distance_m", m.distinct_pose_distance, 0.0, 100.0);
   m.distinct_pose_angle =
-      config.number("/relocalization/distinct_pose_angle_deg", m.distinct_pose_angle / kDeg, 0.0, 180.0) * kDeg;
+      config.number("/relocalization/distinct_pose_angle_deg", m.distinct_pose_angle / kDeg, 0.0, 180.0) *
+      kDeg;
   m.min_matches = static_cast<int>(config.integer("/min_matches", m.min_matches, 3, 100));
   return s;
 }

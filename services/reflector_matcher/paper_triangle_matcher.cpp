@@ -40,10 +40,13 @@ void PaperTriangleMatcher::match(const std::vector<ReflectorDetection>& detectio
         const LargestAngleSignature sig = largest_angle_signature(
             {detections[i].laser_p_center, detections[j].laser_p_center, detections[k].laser_p_center});
         for (const MapTriangle& m : map_triangles_) {
-          if (!signatures_match(sig, m.signature, config_.paper_side_tolerance, config_.paper_angle_tolerance)) continue;
+          if (!signatures_match(sig, m.signature, config_.paper_side_tolerance,
+                                config_.paper_angle_tolerance))
+            continue;
           // Apex to apex, end of the long side to end of the long side, and so on.
           const auto vote = [&](int det_vertex, int map_vertex) {
-            ++votes_[det[static_cast<size_t>(det_vertex)] * nm + static_cast<size_t>(m.vertex[static_cast<size_t>(map_vertex)])];
+            ++votes_[det[static_cast<size_t>(det_vertex)] * nm +
+                     static_cast<size_t>(m.vertex[static_cast<size_t>(map_vertex)])];
           };
           vote(sig.apex, m.signature.apex);
           vote(sig.long_end, m.signature.long_end);

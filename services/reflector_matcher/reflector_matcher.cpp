@@ -10,14 +10,16 @@ ReflectorMatcher::ReflectorMatcher(ReflectorMap map, const MatcherConfig& config
     paper_ = std::make_unique<PaperTriangleMatcher>(map_, config_);
     return;
   }
-  index_ = std::make_unique<MapTriangleIndex>(map_, config_.triangle_side_tolerance, config_.min_triangle_side,
-                                              config_.max_triangle_side,
+  index_ = std::make_unique<MapTriangleIndex>(map_, config_.triangle_side_tolerance,
+                                              config_.min_triangle_side, config_.max_triangle_side,
                                               static_cast<size_t>(config_.max_index_triangles));
   relocalizer_ = std::make_unique<GlobalRelocalizer>(map_, grid_, *index_, config_);
   tracker_ = std::make_unique<TrackingAssociator>(map_, grid_, config_);
 }
 
-size_t ReflectorMatcher::indexed_triangles() const { return paper_ ? paper_->map_triangles() : index_->size(); }
+size_t ReflectorMatcher::indexed_triangles() const {
+  return paper_ ? paper_->map_triangles() : index_->size();
+}
 
 void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, const PosePrior* prior,
                              MatchResult& result) {
@@ -30,7 +32,9 @@ void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, 
     return;
   }
   const int unexplained = result.ndetections - static_cast<int>(result.matches.size());
-  if (unexplained <= config_.tracking_max_unexplained && result.hypothesis_score >= config_.tracking_min_score) return;
+  if (unexplained <= config_.tracking_max_unexplained &&
+      result.hypothesis_score >= config_.tracking_min_score)
+    return;
   // A weak association (distractors, hidden reflectors, or a prior that is off) is checked by the
   // map-wide search, which owes nothing to the prior.
   std::swap(tracked_, result);

@@ -29,7 +29,8 @@ void predict_reflectors(const ReflectorMap& map, const MapGrid& grid, const Pose
 
 bool is_shadowed(const ReflectorMap& map, const std::vector<PredictedReflector>& predicted, size_t k) {
   const PredictedReflector& far = predicted[k];
-  const double far_half = std::asin(std::min(1.0, map.reflectors[static_cast<size_t>(far.map_index)].radius / far.range));
+  const double far_half =
+      std::asin(std::min(1.0, map.reflectors[static_cast<size_t>(far.map_index)].radius / far.range));
   for (size_t j = 0; j < predicted.size(); ++j) {
     const PredictedReflector& near = predicted[j];
     if (j == k || near.range >= far.range) continue;

@@ -18,8 +18,8 @@ namespace refloc {
 struct PredictedReflector {
   int map_index = -1;
   Eigen::Vector2d laser_p = Eigen::Vector2d::Zero();  ///< [m]
-  double range = 0.0;                                  ///< [m]
-  double bearing = 0.0;                                ///< [rad]
+  double range = 0.0;                                 ///< [m]
+  double bearing = 0.0;                               ///< [rad]
   bool in_view = false;  ///< strictly inside range limits and field of view (margin not used)
 };
 

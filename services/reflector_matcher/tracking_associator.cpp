@@ -10,7 +10,8 @@
 
 namespace refloc {
 
-TrackingAssociator::TrackingAssociator(const ReflectorMap& map, const MapGrid& grid, const MatcherConfig& config)
+TrackingAssociator::TrackingAssociator(const ReflectorMap& map, const MapGrid& grid,
+                                       const MatcherConfig& config)
     : map_(map), grid_(grid), config_(config), refit_verifier_(map, grid, config) {}
 
 bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detections, const PosePrior& prior,
@@ -56,7 +57,8 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
       cov(1, 1) += min_det_var;
       const Eigen::Vector2d e = detections[d].laser_p_center - predicted_[k].laser_p;
       const double m2 = e.dot(cov.inverse() * e);
-      if (m2 <= config_.tracking_gate_chi2) candidates_.push_back({m2, static_cast<int>(k), static_cast<int>(d)});
+      if (m2 <= config_.tracking_gate_chi2)
+        candidates_.push_back({m2, static_cast<int>(k), static_cast<int>(d)});
     }
   }
   std::sort(candidates_.begin(), candidates_.end(),
@@ -68,7 +70,8 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
     const auto k = static_cast<size_t>(cand.predicted_index), d = static_cast<size_t>(cand.detection_index);
     if (predicted_used_[k] || detection_used_[d]) continue;
     predicted_used_[k] = detection_used_[d] = 1;
-    fit.add(detections[d].laser_p_center, map_.reflectors[static_cast<size_t>(predicted_[k].map_index)].map_p_center);
+    fit.add(detections[d].laser_p_center,
+            map_.reflectors[static_cast<size_t>(predicted_[k].map_index)].map_p_center);
   }
   if (fit.count() < config_.min_matches) return false;
   Pose2 refined;

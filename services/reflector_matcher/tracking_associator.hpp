@@ -27,7 +27,8 @@ class TrackingAssociator {
 
   /// Fills result (mode TRACKING); returns false (status LOST) when fewer than
   /// config.min_matches detections could be associated, so the caller can relocalize.
-  bool associate(const std::vector<ReflectorDetection>& detections, const PosePrior& prior, MatchResult& result);
+  bool associate(const std::vector<ReflectorDetection>& detections, const PosePrior& prior,
+                 MatchResult& result);
 
  private:
   struct Candidate {

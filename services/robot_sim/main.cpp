@@ -4,9 +4,9 @@
 // TCP that renders the world from the laser's true, moving pose beam by beam.
 
 #include "common/clock.hpp"
-#include "common/service_command_line.hpp"
 #include "common/json_config.hpp"
 #include "common/robot_config.hpp"
+#include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
 #include "robot_sim/encoder_model.hpp"
 #include "robot_sim/mecanum_plant.hpp"
@@ -158,7 +158,8 @@ int run(const Options& o) {
 
 int main(int argc, char** argv) {
   refloc::ServiceCommandLine cli(
-      "robot_sim", "Simulated Mecanum robot: CMD_VEL -> WHEEL_ENCODERS, GROUND_TRUTH, emulated LMS100 on TCP", "");
+      "robot_sim", "Simulated Mecanum robot: CMD_VEL -> WHEEL_ENCODERS, GROUND_TRUTH, emulated LMS100 on TCP",
+      "");
   cli.add_robot_option("robot geometry file (JSON)");
   refloc::Options o;
   auto& app = cli.app;

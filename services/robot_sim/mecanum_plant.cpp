@@ -7,8 +7,8 @@
 
 namespace refloc {
 
-MecanumPlant::MecanumPlant(const RobotConfig& robot, const PlantConfig& config,
-                           const Pose2& map_T_robot, int64_t start_utime)
+MecanumPlant::MecanumPlant(const RobotConfig& robot, const PlantConfig& config, const Pose2& map_T_robot,
+                           int64_t start_utime)
     : robot_(robot),
       config_(config),
       kinematics_(robot),
@@ -23,8 +23,7 @@ void MecanumPlant::command(const BodyTwist& twist, int64_t utime) {
 }
 
 bool MecanumPlant::command_stale() const {
-  return !has_command_ ||
-         static_cast<double>(utime_ - command_utime_) > config_.command_timeout * 1e6;
+  return !has_command_ || static_cast<double>(utime_ - command_utime_) > config_.command_timeout * 1e6;
 }
 
 void MecanumPlant::advance_to(int64_t utime) {

@@ -37,8 +37,8 @@ struct SlipConfig {
 };
 
 struct PlantConfig {
-  double step = 0.001;             ///< internal integration step [s]
-  double command_timeout = 0.2;    ///< a command older than this stops the wheels [s]
+  double step = 0.001;           ///< internal integration step [s]
+  double command_timeout = 0.2;  ///< a command older than this stops the wheels [s]
   SlipConfig slip;
 };
 

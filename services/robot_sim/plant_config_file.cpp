@@ -11,7 +11,8 @@ namespace {
 WheelArray read_wheel_array(const JsonConfig& config, const std::string& pointer, double min, double max) {
   WheelArray values{};
   if (!config.has(pointer)) return values;
-  if (config.array_size(pointer) != 4) config.fail(pointer, "expected 4 values (front-left, front-right, rear-right, rear-left)");
+  if (config.array_size(pointer) != 4)
+    config.fail(pointer, "expected 4 values (front-left, front-right, rear-right, rear-left)");
   for (size_t i = 0; i < 4; ++i) {
     values[i] = config.required_number(pointer + "/" + std::to_string(i), min, max);
   }
@@ -32,7 +33,8 @@ PlantSetup parse_plant_setup(const JsonConfig& config) {
   SlipConfig& slip = s.plant.slip;
   slip.scale_error = read_wheel_array(config, "/slip/scale_error", -0.5, 0.5);
   slip.spin_excess = read_wheel_array(config, "/slip/spin_excess", -0.5, 5.0);
-  slip.lateral_noise_per_speed = config.number("/slip/lateral_noise_per_speed", slip.lateral_noise_per_speed, 0.0, 1.0);
+  slip.lateral_noise_per_speed =
+      config.number("/slip/lateral_noise_per_speed", slip.lateral_noise_per_speed, 0.0, 1.0);
   slip.seed = static_cast<unsigned>(config.integer("/slip/seed", slip.seed, 0, 4294967295LL));
   return s;
 }

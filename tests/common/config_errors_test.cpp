@@ -24,7 +24,8 @@ testing::CommandResult check_map(const std::string& path) {
   return testing::run_command(std::string(REFLOC_BINARY_DIR) + "/bin/refloc-config-check --map " + path);
 }
 
-void expect_config_error(const testing::CommandResult& r, const std::string& file, const std::string& detail) {
+void expect_config_error(const testing::CommandResult& r, const std::string& file,
+                         const std::string& detail) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_THAT(r.output, HasSubstr(file + ": " + detail));
   EXPECT_THAT(r.output, Not(HasSubstr("terminate")));
@@ -53,9 +54,11 @@ TEST(ConfigErrors, WrongType) {
 }
 
 TEST(ConfigErrors, OutOfRangeValue) {
-  const auto path = write_file("out_of_range.json", R"({"reflectors": [{"id": 1, "x": 0, "y": 0, "radius_m": -0.06},
+  const auto path =
+      write_file("out_of_range.json", R"({"reflectors": [{"id": 1, "x": 0, "y": 0, "radius_m": -0.06},
       {"id": 2, "x": 4, "y": 0}, {"id": 3, "x": 0, "y": 3}]})");
-  expect_config_error(check_map(path), path, "/reflectors/0/radius_m: expected a finite number in [0.001, 5]");
+  expect_config_error(check_map(path), path,
+                      "/reflectors/0/radius_m: expected a finite number in [0.001, 5]");
 }
 
 TEST(ConfigErrors, NanIsNotANumber) {

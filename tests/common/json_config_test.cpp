@@ -38,7 +38,8 @@ TEST(JsonConfig, OutOfRangeNamesFilePointerAndRange) {
 
 TEST(JsonConfig, WrongTypeNamesTheTypeFound) {
   const JsonConfig c = make(R"({"rate_hz": "fast", "n": 1.5, "on": 1})");
-  EXPECT_THAT(error_of([&] { c.number("/rate_hz", 50.0); }), HasSubstr("expected a number, got string \"fast\""));
+  EXPECT_THAT(error_of([&] { c.number("/rate_hz", 50.0); }),
+              HasSubstr("expected a number, got string \"fast\""));
   EXPECT_THAT(error_of([&] { c.integer("/n", 1); }), HasSubstr("/n: expected an integer"));
   EXPECT_THAT(error_of([&] { c.boolean("/on", false); }), HasSubstr("/on: expected true or false"));
 }
@@ -50,7 +51,8 @@ TEST(JsonConfig, MissingRequiredKeyIsAnError) {
 
 TEST(JsonConfig, NonFiniteNumberIsRejected) {
   // Documents built in memory (not parsed) can hold NaN and infinity.
-  const JsonConfig c(nlohmann::json{{"x", std::numeric_limits<double>::infinity()}, {"y", std::nan("")}}, "test.json");
+  const JsonConfig c(nlohmann::json{{"x", std::numeric_limits<double>::infinity()}, {"y", std::nan("")}},
+                     "test.json");
   EXPECT_THAT(error_of([&] { c.number("/y", 0.0); }), HasSubstr("/y: expected a finite number"));
   EXPECT_THAT(error_of([&] { c.number("/x", 0.0); }), HasSubstr("/x: expected a finite number"));
 }
@@ -58,12 +60,15 @@ TEST(JsonConfig, NonFiniteNumberIsRejected) {
 TEST(JsonConfig, UnknownKeyIsReportedWithItsPointer) {
   const JsonConfig c = make(R"({"good": 1, "nested": {"typo_m": 2}})");
   c.number("/good", 0.0);
-  EXPECT_THAT(error_of([&] { c.reject_unknown_keys(); }), HasSubstr("test.json: /nested/typo_m: unknown key"));
+  EXPECT_THAT(error_of([&] { c.reject_unknown_keys(); }),
+              HasSubstr("test.json: /nested/typo_m: unknown key"));
 }
 
 TEST(JsonConfig, ChoiceListsAllowedValues) {
   const JsonConfig c = make(R"({"mode": "fancy"})");
-  EXPECT_THAT(error_of([&] { c.choice("/mode", "default", {"default", "paper"}); }),
+  EXPECT_THAT(error_of([&] {
+                c.choice("/mode", "default", {"default", "paper"});
+              }),
               HasSubstr("expected one of \"default\", \"paper\", got \"fancy\""));
 }
 

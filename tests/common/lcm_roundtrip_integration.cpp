@@ -388,7 +388,8 @@ class LcmRoundTrip : public ::testing::Test {
     ASSERT_TRUE(lcm_.good()) << "no multicast route: run this test through tests/tools/run_in_netns.sh";
     lcm_.subscribe(".*_ECHO", &Inbox::on_message, &inbox_);
     lcm_.subscribe("HEARTBEAT", &LcmRoundTrip::on_heartbeat, this);
-    ASSERT_TRUE(peer_.start({std::string(REFLOC_BINARY_DIR) + "/bin/lcm_echo_peer", std::string("--lcm-url=") + kUrl}));
+    ASSERT_TRUE(peer_.start(
+        {std::string(REFLOC_BINARY_DIR) + "/bin/lcm_echo_peer", std::string("--lcm-url=") + kUrl}));
   }
 
   void on_heartbeat(const lcm::ReceiveBuffer*, const std::string&, const heartbeat_t* hb) {

@@ -48,8 +48,7 @@ TEST(LcmSpyTypes, EveryCppTypeResolvesToItsJavaClassInTheJar) {
 
   // lcm-spy's class path: LCM, jchart2d (its plots), our types.
   std::string command = std::string("java -cp /usr/share/java/lcm.jar:/usr/share/java/jchart2d.jar:") +
-                        REFLOC_LCMTYPES_JAR + ":" +
-                        REFLOC_JAVA_CHECK_DIR + " LcmSpyTypeCheck";
+                        REFLOC_LCMTYPES_JAR + ":" + REFLOC_JAVA_CHECK_DIR + " LcmSpyTypeCheck";
   for (const auto& [hash, name] : expected) command += " " + std::to_string(hash);
   const auto result = testing::run_command(command);
   ASSERT_EQ(result.exit_code, 0) << result.output;

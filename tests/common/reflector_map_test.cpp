@@ -1,5 +1,5 @@
-#include "common/json_config.hpp"
 #include "common/reflector_map.hpp"
+#include "common/json_config.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -49,9 +49,10 @@ TEST(ReflectorMap, MissingCoordinateAndBadRadiusAreNamed) {
   EXPECT_THAT(map_error(R"({"reflectors": [{"id": 1, "x": 0}, {"id": 2, "x": 1, "y": 0},
                                           {"id": 3, "x": 2, "y": 0}]})"),
               HasSubstr("/reflectors/0/y: missing"));
-  EXPECT_THAT(map_error(R"({"reflectors": [{"id": 1, "x": 0, "y": 0, "radius_m": 0}, {"id": 2, "x": 1, "y": 0},
+  EXPECT_THAT(
+      map_error(R"({"reflectors": [{"id": 1, "x": 0, "y": 0, "radius_m": 0}, {"id": 2, "x": 1, "y": 0},
                                           {"id": 3, "x": 2, "y": 0}]})"),
-              HasSubstr("/reflectors/0/radius_m: expected a finite number in [0.001, 5]"));
+      HasSubstr("/reflectors/0/radius_m: expected a finite number in [0.001, 5]"));
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #include "common/se2.hpp"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <random>
@@ -41,7 +41,7 @@ TEST(CircularMean, AveragesAcrossTheWrap) {
 }
 
 TEST(Pose2, ComposeWithInverseIsIdentity) {
-  for (const Pose2& a : random_poses(200)) {
+  for (const Pose2 &a : random_poses(200)) {
     EXPECT_TRUE(approx_equal(a * a.inverse(), Pose2{}, 1e-9, 1e-12));
     EXPECT_TRUE(approx_equal(a.inverse() * a, Pose2{}, 1e-9, 1e-12));
   }

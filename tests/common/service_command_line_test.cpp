@@ -55,10 +55,11 @@ TEST(ServiceCommandLine, HelpExitsZeroWithoutRunning) {
   ServiceCommandLine cli("test_service", "test", "");
   Argv a({"test_service", "--help"});
   bool ran = false;
-  EXPECT_EQ(cli.run(a.argc(), a.argv(), [&] {
-    ran = true;
-    return 0;
-  }),
+  EXPECT_EQ(cli.run(a.argc(), a.argv(),
+                    [&] {
+                      ran = true;
+                      return 0;
+                    }),
             0);
   EXPECT_FALSE(ran);
 }

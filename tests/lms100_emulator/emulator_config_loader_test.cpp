@@ -48,7 +48,8 @@ TEST(EmulatorConfigLoader, RejectsWhatAnLms100CannotDoNamingTheKey) {
     parse_emulator_config(doc(R"({"scan_frequency_hz": 50, "angular_resolution_deg": 0.25})"));
     FAIL() << "no error";
   } catch (const ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("test.json: /angular_resolution_deg"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("test.json: /angular_resolution_deg"), std::string::npos)
+        << e.what();
   }
   EXPECT_THROW(parse_emulator_config(doc(R"({"scan_frequency_hz": 40})")), ConfigError);
   EXPECT_THROW(parse_emulator_config(doc(R"({"port": 70000})")), ConfigError);

@@ -29,7 +29,8 @@ inline std::unique_ptr<Lms100Emulator> start_emulator(const Lms100EmulatorConfig
 }
 
 /// Login, RSSI 16-bit with time info, wait for STlms 7, subscribe. Returns false on any unexpected reply.
-inline bool subscribe_to_stream(EmulatorTestClient& client, const char* data_config = "01 00 1 1 0 00 00 0 0 0 1 +1") {
+inline bool subscribe_to_stream(EmulatorTestClient& client,
+                                const char* data_config = "01 00 1 1 0 00 00 0 0 0 1 +1") {
   if (client.request("sMN SetAccessMode 03 F4724744") != "sAN SetAccessMode 1") return false;
   if (client.request(std::string("sWN LMDscandatacfg ") + data_config) != "sWA LMDscandatacfg") return false;
   if (client.request("sMN Run") != "sAN Run 1") return false;

@@ -47,7 +47,9 @@ struct Collector {
   std::vector<heartbeat_t> heartbeats;
   std::vector<laser_scan_t> scans;
   std::vector<int64_t> scan_receive_us;
-  void on_heartbeat(const lcm::ReceiveBuffer*, const std::string&, const heartbeat_t* m) { heartbeats.push_back(*m); }
+  void on_heartbeat(const lcm::ReceiveBuffer*, const std::string&, const heartbeat_t* m) {
+    heartbeats.push_back(*m);
+  }
   void on_scan(const lcm::ReceiveBuffer* rbuf, const std::string&, const laser_scan_t* m) {
     scans.push_back(*m);
     scan_receive_us.push_back(rbuf->recv_utime);
@@ -102,7 +104,8 @@ TEST(Lms100EmulatorProcess, BadConfigExitsWithCodeTwoNamingFileAndKey) {
   const std::string log = std::string(REFLOC_BINARY_DIR) + "/lms100_emulator_bad_config.log";
   std::ofstream(log, std::ios::trunc).close();
   testing::ChildProcess emulator({kBin + "lms100_emulator", "--config", config, "--no-lcm"}, log);
-  for (int i = 0; i < 200 && emulator.running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  for (int i = 0; i < 200 && emulator.running(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   EXPECT_EQ(emulator.stop(), 2);
   const std::string text = read_file(log);
   EXPECT_NE(text.find("lms100_emulator_bad_config.json: /scan_frequency_hz"), std::string::npos) << text;
@@ -114,10 +117,11 @@ TEST(Lms100EmulatorProcess, TheRealDriverStreamsItAsLms100ScanAtFiftyHertz) {
   Collector collector;
   lcm.subscribe("LMS100_SCAN", &Collector::on_scan, &collector);
   const std::string log = std::string(REFLOC_BINARY_DIR) + "/lms100_emulator_driver_e2e.log";
-  testing::ChildProcess emulator(
-      {kBin + "lms100_emulator", "--world", kWorld, "--pose", "10,3,1.5708", "--spin-up-s", "0.5", "--no-lcm"}, log);
-  testing::ChildProcess driver({kBin + "lms100_driver", "--host", "127.0.0.1", "--port", "2111", "--lcm-url", kUrl},
-                               log);
+  testing::ChildProcess emulator({kBin + "lms100_emulator", "--world", kWorld, "--pose", "10,3,1.5708",
+                                  "--spin-up-s", "0.5", "--no-lcm"},
+                                 log);
+  testing::ChildProcess driver(
+      {kBin + "lms100_driver", "--host", "127.0.0.1", "--port", "2111", "--lcm-url", kUrl}, log);
   for (int i = 0; i < 150 && collector.scans.size() < 60; ++i) lcm.handleTimeout(20);
   collector.scans.clear();
   collector.scan_receive_us.clear();

@@ -14,7 +14,8 @@ namespace refloc {
 namespace {
 
 std::string read_real_lms111_payload() {
-  std::ifstream in(std::string(REFLOC_SOURCE_DIR) + "/tests/data/sick-real/lms111_cola_a_scan.txt", std::ios::binary);
+  std::ifstream in(std::string(REFLOC_SOURCE_DIR) + "/tests/data/sick-real/lms111_cola_a_scan.txt",
+                   std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const size_t stx = bytes.find('\x02');
   const size_t etx = bytes.rfind('\x03');

@@ -44,26 +44,33 @@ TEST_F(Lms100DeviceTest, RunAnswersOneAndLogsOut) {
 TEST_F(Lms100DeviceTest, ScanConfigNeedsLoginAndEchoesTheConfigurationInForce) {
   EXPECT_EQ(ask("sMN mLMPsetscancfg +2500 +1 +2500 -450000 +2250000"), "sFA 1");
   login();
-  EXPECT_EQ(ask("sMN mLMPsetscancfg +2500 +1 +2500 -450000 +2250000"), "sAN mLMPsetscancfg 0 9C4 1 9C4 FFF92230 225510");
+  EXPECT_EQ(ask("sMN mLMPsetscancfg +2500 +1 +2500 -450000 +2250000"),
+            "sAN mLMPsetscancfg 0 9C4 1 9C4 FFF92230 225510");
   EXPECT_EQ(ask("sRN LMPscancfg"), "sRA LMPscancfg 9C4 1 9C4 FFF92230 225510");
   EXPECT_EQ(device_.full_scan_beams(), 1081);
   // Hex arguments are accepted as well as signed decimal.
-  EXPECT_EQ(ask("sMN mLMPsetscancfg 1388 1 1388 FFF92230 225510"), "sAN mLMPsetscancfg 0 1388 1 1388 FFF92230 225510");
+  EXPECT_EQ(ask("sMN mLMPsetscancfg 1388 1 1388 FFF92230 225510"),
+            "sAN mLMPsetscancfg 0 1388 1 1388 FFF92230 225510");
   EXPECT_EQ(device_.full_scan_beams(), 541);
 }
 
 TEST_F(Lms100DeviceTest, ScanConfigRejectsWhatAnLms1xxCannotDo) {
   login();
   // 50 Hz at 0.25 deg: invalid resolution for that frequency.
-  EXPECT_EQ(ask("sMN mLMPsetscancfg +5000 +1 +2500 -450000 +2250000"), "sAN mLMPsetscancfg 2 1388 1 1388 FFF92230 225510");
-  EXPECT_EQ(ask("sMN mLMPsetscancfg +3000 +1 +5000 -450000 +2250000"), "sAN mLMPsetscancfg 1 1388 1 1388 FFF92230 225510");
-  EXPECT_EQ(ask("sMN mLMPsetscancfg +3000 +1 +1000 -450000 +2250000"), "sAN mLMPsetscancfg 3 1388 1 1388 FFF92230 225510");
-  EXPECT_EQ(ask("sMN mLMPsetscancfg +5000 +1 +5000 -460000 +2250000"), "sAN mLMPsetscancfg 4 1388 1 1388 FFF92230 225510");
+  EXPECT_EQ(ask("sMN mLMPsetscancfg +5000 +1 +2500 -450000 +2250000"),
+            "sAN mLMPsetscancfg 2 1388 1 1388 FFF92230 225510");
+  EXPECT_EQ(ask("sMN mLMPsetscancfg +3000 +1 +5000 -450000 +2250000"),
+            "sAN mLMPsetscancfg 1 1388 1 1388 FFF92230 225510");
+  EXPECT_EQ(ask("sMN mLMPsetscancfg +3000 +1 +1000 -450000 +2250000"),
+            "sAN mLMPsetscancfg 3 1388 1 1388 FFF92230 225510");
+  EXPECT_EQ(ask("sMN mLMPsetscancfg +5000 +1 +5000 -460000 +2250000"),
+            "sAN mLMPsetscancfg 4 1388 1 1388 FFF92230 225510");
   EXPECT_EQ(ask("sMN mLMPsetscancfg +5000 +1 +5000 -450000"), "sFA 8");
   EXPECT_EQ(ask("sMN mLMPsetscancfg +5000 +1 +5000 -450000 +2250000 +1"), "sFA 7");
   EXPECT_EQ(ask("sMN mLMPsetscancfg +5000 +1 +5000 -450000 xyz"), "sFA 5");
   // 25 Hz at 0.5 deg is allowed (clearpath PR #39).
-  EXPECT_EQ(ask("sMN mLMPsetscancfg +2500 +1 +5000 -450000 +2250000"), "sAN mLMPsetscancfg 0 9C4 1 1388 FFF92230 225510");
+  EXPECT_EQ(ask("sMN mLMPsetscancfg +2500 +1 +5000 -450000 +2250000"),
+            "sAN mLMPsetscancfg 0 9C4 1 1388 FFF92230 225510");
 }
 
 TEST_F(Lms100DeviceTest, OutputRangeReportsHalfDegreeEvenAtQuarterDegreeLikeARealLms100) {
@@ -176,10 +183,39 @@ TEST_F(Lms100DeviceTest, ErrorsUseTheSopasCodes) {
 
 TEST(Lms100DeviceRandomRequests, EveryRequestGetsAnAnswerOrAScanAndTheDeviceStaysUsable) {
   // Requests built from real command words, numbers and junk, in random order and count.
-  const std::vector<std::string> words = {
-      "sMN", "sRN", "sWN", "sEN", "sAN", "sFA", "SetAccessMode", "mLMPsetscancfg", "LMPscancfg", "LMPoutputRange",
-      "LMDscandatacfg", "LMDscandata", "LMCstartmeas", "LMCstopmeas", "Run", "STlms", "03", "F4724744", "+5000",
-      "-450000", "+2500", "1388", "FFF92230", "225510", "0", "1", "2", "+1", "", "-", "+", "FFFFFFFFF", "\x01"};
+  const std::vector<std::string> words = {"sMN",
+                                          "sRN",
+                                          "sWN",
+                                          "sEN",
+                                          "sAN",
+                                          "sFA",
+                                          "SetAccessMode",
+                                          "mLMPsetscancfg",
+                                          "LMPscancfg",
+                                          "LMPoutputRange",
+                                          "LMDscandatacfg",
+                                          "LMDscandata",
+                                          "LMCstartmeas",
+                                          "LMCstopmeas",
+                                          "Run",
+                                          "STlms",
+                                          "03",
+                                          "F4724744",
+                                          "+5000",
+                                          "-450000",
+                                          "+2500",
+                                          "1388",
+                                          "FFF92230",
+                                          "225510",
+                                          "0",
+                                          "1",
+                                          "2",
+                                          "+1",
+                                          "",
+                                          "-",
+                                          "+",
+                                          "FFFFFFFFF",
+                                          "\x01"};
   std::mt19937 rng(7);
   Lms100Device device{Lms100DeviceConfig{}};
   std::string reply;

@@ -11,7 +11,8 @@
 namespace refloc::test {
 namespace {
 
-std::vector<LmdScanData> collect(EmulatorTestClient& client, int count, std::vector<int64_t>* times = nullptr) {
+std::vector<LmdScanData> collect(EmulatorTestClient& client, int count,
+                                 std::vector<int64_t>* times = nullptr) {
   std::vector<LmdScanData> scans;
   ReceivedFrame frame;
   while (static_cast<int>(scans.size()) < count && client.next_scan(frame, 800)) {
@@ -21,7 +22,9 @@ std::vector<LmdScanData> collect(EmulatorTestClient& client, int count, std::vec
   return scans;
 }
 
-size_t count_etx(const std::string& bytes) { return static_cast<size_t>(std::count(bytes.begin(), bytes.end(), '\x03')); }
+size_t count_etx(const std::string& bytes) {
+  return static_cast<size_t>(std::count(bytes.begin(), bytes.end(), '\x03'));
+}
 
 TEST(Lms100EmulatorFaults, BoundarySplitSendsStxAloneAndEveryScanStillParses) {
   Lms100EmulatorConfig config = make_test_emulator_config();
@@ -48,7 +51,8 @@ TEST(Lms100EmulatorFaults, RandomSplitCutsScansIntoSeveralReads) {
   const std::vector<LmdScanData> scans = collect(client, 10);
   ASSERT_EQ(scans.size(), 10u);
   EXPECT_GE(client.raw_reads().size() - reads_before, 25u);  // ~4 reads a scan
-  for (size_t i = 1; i < scans.size(); ++i) EXPECT_EQ(scans[i].scan_counter, (scans[i - 1].scan_counter + 1) & 0xFFFF);
+  for (size_t i = 1; i < scans.size(); ++i)
+    EXPECT_EQ(scans[i].scan_counter, (scans[i - 1].scan_counter + 1) & 0xFFFF);
 }
 
 TEST(Lms100EmulatorFaults, MergeSendsSeveralScansInOneWrite) {
@@ -65,7 +69,8 @@ TEST(Lms100EmulatorFaults, MergeSendsSeveralScansInOneWrite) {
   for (const std::string& read : client.raw_reads()) multi_frame_reads += count_etx(read) >= 3 ? 1 : 0;
   EXPECT_GE(multi_frame_reads, 2u);
   // Scans still come in order and complete, three at a time about 60 ms apart.
-  for (size_t i = 1; i < scans.size(); ++i) EXPECT_EQ(scans[i].scan_counter, (scans[i - 1].scan_counter + 1) & 0xFFFF);
+  for (size_t i = 1; i < scans.size(); ++i)
+    EXPECT_EQ(scans[i].scan_counter, (scans[i - 1].scan_counter + 1) & 0xFFFF);
   const int64_t max_gap = [&] {
     int64_t gap = 0;
     for (size_t i = 1; i < times.size(); ++i) gap = std::max(gap, times[i] - times[i - 1]);
@@ -106,7 +111,8 @@ TEST(Lms100EmulatorFaults, StallHoldsTheStreamThenDeliversTheBacklogInABurst) {
   ASSERT_EQ(scans.size(), 20u);
   EXPECT_GT(times[0] - stall_start, 280000);
   // Nothing was lost: counters are continuous through the stall.
-  for (size_t i = 1; i < scans.size(); ++i) EXPECT_EQ(scans[i].scan_counter, (scans[i - 1].scan_counter + 1) & 0xFFFF);
+  for (size_t i = 1; i < scans.size(); ++i)
+    EXPECT_EQ(scans[i].scan_counter, (scans[i - 1].scan_counter + 1) & 0xFFFF);
   // The backlog (~14 scans made during the stall) arrived together right after it.
   EXPECT_LT(times[10] - times[0], 10000);
 }

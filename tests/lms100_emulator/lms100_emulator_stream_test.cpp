@@ -158,11 +158,12 @@ TEST(Lms100EmulatorStream, SourceSeesBeamTimesOnTheHostClock) {
   std::vector<ScanRequest> requests;
   std::mutex mutex;
   Lms100EmulatorConfig config = make_test_emulator_config();
-  Lms100Emulator emulator(config, [&](const ScanRequest& r, std::vector<uint16_t>& d, std::vector<uint16_t>&) {
-    std::lock_guard<std::mutex> lock(mutex);
-    requests.push_back(r);
-    std::fill(d.begin(), d.end(), 1234);
-  });
+  Lms100Emulator emulator(config,
+                          [&](const ScanRequest& r, std::vector<uint16_t>& d, std::vector<uint16_t>&) {
+                            std::lock_guard<std::mutex> lock(mutex);
+                            requests.push_back(r);
+                            std::fill(d.begin(), d.end(), 1234);
+                          });
   emulator.start();
   EmulatorTestClient client(emulator.port());
   ASSERT_TRUE(subscribe_to_stream(client));

@@ -41,7 +41,8 @@ TEST(BeamCandidateIndex, GivesTheSameScansAsTestingEverything) {
     const double vx = speed(pick);
     const double vy = speed(pick);
     const double wz = 3.0 * speed(pick);  // up to 6 rad/s: a fast spin during the 15 ms sweep
-    expect_same_scan(world, [start](int64_t) { return start; }, 0, k);
+    expect_same_scan(
+        world, [start](int64_t) { return start; }, 0, k);
     expect_same_scan(
         world,
         [=](int64_t utime) {
@@ -62,7 +63,12 @@ TEST(BeamCandidateIndex, CloseObjectsAndWrapAroundAreCandidatesEverywhereTheyCan
   add_polyline(world, {{-1.0, -3.0}, {-1.0, 3.0}, {4.0, 3.0}}, false, SurfaceKind::kDiffuse, 0.5);
   for (uint64_t seed = 0; seed < 5; ++seed) {
     const double theta = M_PI - 0.3 * static_cast<double>(seed);
-    expect_same_scan(world, [theta](int64_t) { return Pose2{0.0, 0.0, theta}; }, 0, seed);
+    expect_same_scan(
+        world,
+        [theta](int64_t) {
+          return Pose2{0.0, 0.0, theta};
+        },
+        0, seed);
   }
 }
 

@@ -30,8 +30,8 @@ ScanRequest lms100_request(int rssi_bits) {
 }
 
 TEST(RenderedScanSource, FillsMillimetresAndSixteenBitRssi) {
-  ScanSource source =
-      make_rendered_scan_source(wall_and_reflector_world(), [](int64_t) { return Pose2{}; }, {}, 1);
+  ScanSource source = make_rendered_scan_source(
+      wall_and_reflector_world(), [](int64_t) { return Pose2{}; }, {}, 1);
   std::vector<uint16_t> dist(541, 0);
   std::vector<uint16_t> rssi(541, 0);
   source(lms100_request(16), dist, rssi);
@@ -45,8 +45,8 @@ TEST(RenderedScanSource, FillsMillimetresAndSixteenBitRssi) {
 }
 
 TEST(RenderedScanSource, EightBitRssiAndNoRssiFollowTheRequest) {
-  ScanSource source =
-      make_rendered_scan_source(wall_and_reflector_world(), [](int64_t) { return Pose2{}; }, {}, 1);
+  ScanSource source = make_rendered_scan_source(
+      wall_and_reflector_world(), [](int64_t) { return Pose2{}; }, {}, 1);
   std::vector<uint16_t> dist(541, 0);
   std::vector<uint16_t> rssi(541, 0);
   source(lms100_request(8), dist, rssi);
@@ -86,7 +86,8 @@ TEST(RenderedScanSource, DazzledAndOutOfRangeUseTheSensorCodes) {
   add_polyline(*world, {{-25.0, -30.0}, {-25.0, 30.0}}, false, SurfaceKind::kDiffuse, 0.9);
   ScanRenderConfig config;
   config.sensor.dazzle_range = 0.3;
-  ScanSource source = make_rendered_scan_source(world, [](int64_t) { return Pose2{}; }, config, 1);
+  ScanSource source = make_rendered_scan_source(
+      world, [](int64_t) { return Pose2{}; }, config, 1);
   std::vector<uint16_t> dist(541, 7);
   std::vector<uint16_t> rssi(541, 7);
   source(lms100_request(16), dist, rssi);

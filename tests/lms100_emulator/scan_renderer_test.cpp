@@ -178,7 +178,8 @@ TEST(ScanRenderer, FullyCoveredReflectorPointsLieOnItsNearSurface) {
   for (size_t i = 0; i < scan.ranges.size(); ++i) {
     const BeamTruth& t = renderer.truth()[i];
     if (t.kind != HitKind::kReflector || t.coverage < 0.99) continue;
-    const Eigen::Vector2d p = scan.ranges[i] * Eigen::Vector2d(std::cos(scan.beam_angle(i)), std::sin(scan.beam_angle(i)));
+    const Eigen::Vector2d p =
+        scan.ranges[i] * Eigen::Vector2d(std::cos(scan.beam_angle(i)), std::sin(scan.beam_angle(i)));
     EXPECT_NEAR((p - Eigen::Vector2d(2.5, 0.4)).norm(), 0.06, 0.003) << "beam " << i;
     ++checked;
   }
@@ -343,7 +344,8 @@ TEST(ScanRenderer, TapeIsBrightUntilSteepIncidenceMetalOnlyNearNormal) {
     LaserScan scan;
     renderer.render(world, Pose2{}, 0, rng, scan);
     if (bright) {
-      EXPECT_GT(scan.rssi[270], kPaperRssiThreshold16) << surface_kind_name(surface) << " at " << incidence_deg;
+      EXPECT_GT(scan.rssi[270], kPaperRssiThreshold16)
+          << surface_kind_name(surface) << " at " << incidence_deg;
     } else {
       EXPECT_LT(scan.rssi[270], 30000) << surface_kind_name(surface) << " at " << incidence_deg;
     }

@@ -118,7 +118,8 @@ TEST(World, SymmetricWorldLooksTheSameAfterAHalfTurn) {
   for (const MapReflector& r : world.reflectors.reflectors) {
     const Eigen::Vector2d turned = 2.0 * centre - r.map_p_center;
     int matches = 0;
-    for (const MapReflector& s : world.reflectors.reflectors) matches += (s.map_p_center - turned).norm() < 1e-9;
+    for (const MapReflector& s : world.reflectors.reflectors)
+      matches += (s.map_p_center - turned).norm() < 1e-9;
     EXPECT_EQ(matches, 1) << "reflector " << r.id;
   }
   // And the renderer agrees: identical noise-free scans from the two poses.
@@ -140,7 +141,8 @@ TEST(World, SymmetricWorldLooksTheSameAfterAHalfTurn) {
 TEST(World, VisibilityIsBlockedByWallsAndLimitedByFieldOfView) {
   World world;
   add_polyline(world, {{2.0, -1.0}, {2.0, 1.0}}, false, SurfaceKind::kDiffuse, 0.5);
-  for (const auto& [id, x, y] : std::vector<std::tuple<int, double, double>>{{1, 4, 0}, {2, 1, 3}, {3, -3, 0}}) {
+  for (const auto& [id, x, y] :
+       std::vector<std::tuple<int, double, double>>{{1, 4, 0}, {2, 1, 3}, {3, -3, 0}}) {
     MapReflector r;
     r.id = id;
     r.map_p_center = {x, y};
@@ -230,15 +232,17 @@ TEST_F(WorldLoaderErrors, ErrorInsideTheMapFileNamesBothFiles) {
 }
 
 TEST_F(WorldLoaderErrors, WrongTypeOfACoordinate) {
-  EXPECT_THAT(error_of(R"({"map_file": "map.json", "walls": [{"points": [[0, 0], ["1", 0]]}]})"),
-              AllOf(HasSubstr(world_path()), HasSubstr("/walls/0/points/1/0"), HasSubstr("expected a number")));
+  EXPECT_THAT(
+      error_of(R"({"map_file": "map.json", "walls": [{"points": [[0, 0], ["1", 0]]}]})"),
+      AllOf(HasSubstr(world_path()), HasSubstr("/walls/0/points/1/0"), HasSubstr("expected a number")));
 }
 
 TEST_F(WorldLoaderErrors, OutOfRangeCoordinateAndRemission) {
   EXPECT_THAT(error_of(R"({"map_file": "map.json", "obstacles": [{"points": [[0, 0], [1e300, 0]]}]})"),
               AllOf(HasSubstr(world_path()), HasSubstr("/obstacles/0/points/1/0")));
-  EXPECT_THAT(error_of(R"({"map_file": "map.json", "walls": [{"points": [[0, 0], [1, 0]], "remission": -1}]})"),
-              AllOf(HasSubstr(world_path()), HasSubstr("/walls/0/remission")));
+  EXPECT_THAT(
+      error_of(R"({"map_file": "map.json", "walls": [{"points": [[0, 0], [1, 0]], "remission": -1}]})"),
+      AllOf(HasSubstr(world_path()), HasSubstr("/walls/0/remission")));
 }
 
 TEST_F(WorldLoaderErrors, DuplicateReflectorIdBetweenMapAndWorld) {
@@ -247,10 +251,13 @@ TEST_F(WorldLoaderErrors, DuplicateReflectorIdBetweenMapAndWorld) {
 }
 
 TEST_F(WorldLoaderErrors, UnknownKeyAndUnknownSurface) {
-  EXPECT_THAT(error_of(R"({"map_file": "map.json", "walls": [{"points": [[0, 0], [1, 0]], "colour": "red"}]})"),
-              AllOf(HasSubstr(world_path()), HasSubstr("/walls/0/colour"), HasSubstr("unknown key")));
-  EXPECT_THAT(error_of(R"({"map_file": "map.json", "distractors": [{"surface": "glass", "points": [[0, 0], [1, 0]]}]})"),
-              AllOf(HasSubstr(world_path()), HasSubstr("/distractors/0/surface")));
+  EXPECT_THAT(
+      error_of(R"({"map_file": "map.json", "walls": [{"points": [[0, 0], [1, 0]], "colour": "red"}]})"),
+      AllOf(HasSubstr(world_path()), HasSubstr("/walls/0/colour"), HasSubstr("unknown key")));
+  EXPECT_THAT(
+      error_of(
+          R"({"map_file": "map.json", "distractors": [{"surface": "glass", "points": [[0, 0], [1, 0]]}]})"),
+      AllOf(HasSubstr(world_path()), HasSubstr("/distractors/0/surface")));
 }
 
 TEST_F(WorldLoaderErrors, DegeneratePolylines) {
@@ -261,7 +268,8 @@ TEST_F(WorldLoaderErrors, DegeneratePolylines) {
 }
 
 TEST_F(WorldLoaderErrors, RenderConfigErrorsNameTheirPointer) {
-  const JsonConfig config(nlohmann::json::parse(R"({"renderer": {"sensor": {"range_sigma": 5}}})"), "emu.json");
+  const JsonConfig config(nlohmann::json::parse(R"({"renderer": {"sensor": {"range_sigma": 5}}})"),
+                          "emu.json");
   try {
     parse_scan_render_config(config, "/renderer");
     FAIL() << "no error";

@@ -43,7 +43,7 @@ struct DriveResult {
 };
 
 DriveResult drive(const BodyTwist& twist, double duration, double rate_hz, int64_t start_ticks = 0,
-          const WheelArray& scale = {1, 1, 1, 1}) {
+                  const WheelArray& scale = {1, 1, 1, 1}) {
   const RobotConfig robot;
   DriveResult run{MecanumOdometry(robot, OdometryConfig{})};
   TickSource source(robot, start_ticks);
@@ -109,13 +109,15 @@ TEST(MecanumOdometry, CountsWrappingAroundInt32AreSeamless) {
   const int64_t near_max = std::numeric_limits<int32_t>::max() - 50'000;
   const DriveResult run = drive({0.5, 0.0, 0.0}, 2.0, 100.0, near_max);  // 34000 ticks a metre
   EXPECT_NEAR(run.odometry.estimate().odom_T_robot.x, 1.0, kQuantisation);
-  const DriveResult backwards = drive({-0.5, 0.0, 0.0}, 2.0, 100.0, std::numeric_limits<int32_t>::min() + 50'000);
+  const DriveResult backwards =
+      drive({-0.5, 0.0, 0.0}, 2.0, 100.0, std::numeric_limits<int32_t>::min() + 50'000);
   EXPECT_NEAR(backwards.odometry.estimate().odom_T_robot.x, -1.0, kQuantisation);
 }
 
 TEST(TickDelta, DifferenceAcrossTheWrapIsTheShortWay) {
   EXPECT_EQ(tick_delta(std::numeric_limits<int32_t>::min() + 5, std::numeric_limits<int32_t>::max() - 4), 10);
-  EXPECT_EQ(tick_delta(std::numeric_limits<int32_t>::max() - 4, std::numeric_limits<int32_t>::min() + 5), -10);
+  EXPECT_EQ(tick_delta(std::numeric_limits<int32_t>::max() - 4, std::numeric_limits<int32_t>::min() + 5),
+            -10);
   EXPECT_EQ(tick_delta(100, -100), 200);
 }
 

@@ -25,7 +25,7 @@ TEST(NavigatorClosedLoop, ReachesSixWaypointsWithinTenMillimetresAndHalfADegree)
   NavGoal goal;
   goal.goal_id = 1;
   goal.max_speed = 1.0;
-  goal.waypoints = {{3.0, 0.0, 0.0},        {3.0, 2.0, 90 * kDeg},  {1.0, 3.0, 180 * kDeg},
+  goal.waypoints = {{3.0, 0.0, 0.0},         {3.0, 2.0, 90 * kDeg},  {1.0, 3.0, 180 * kDeg},
                     {-1.0, 1.0, -45 * kDeg}, {0.5, -1.5, 30 * kDeg}, {0.0, 0.0, 0.0}};
   nav.set_goal(goal, 0);
 
@@ -47,7 +47,8 @@ TEST(NavigatorClosedLoop, ReachesSixWaypointsWithinTenMillimetresAndHalfADegree)
     peak_speed = std::max(peak_speed, std::hypot(plant.body_twist().vx, plant.body_twist().vy));
     now += 20'000;
   }
-  ASSERT_EQ(nav.status().state, NavState::kArrived) << to_string(nav.status().state) << " after " << now * 1e-6 << " s";
+  ASSERT_EQ(nav.status().state, NavState::kArrived)
+      << to_string(nav.status().state) << " after " << now * 1e-6 << " s";
   ASSERT_EQ(reached.size(), 6u);
   for (size_t i = 0; i < reached.size(); ++i) {
     EXPECT_LE(reached[i].xy, 0.010) << "waypoint " << i;

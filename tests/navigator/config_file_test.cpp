@@ -9,7 +9,8 @@ namespace refloc {
 namespace {
 
 TEST(NavigatorConfigFile, DeployedFileLoadsWithTheLibraryDefaults) {
-  const JsonConfig file = JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/navigator.json");
+  const JsonConfig file =
+      JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/navigator.json");
   const NavigatorServiceConfig c = parse_navigator_service_config(file);
   file.reject_unknown_keys();
   const NavigatorConfig defaults;

@@ -31,7 +31,8 @@ TEST(FusedClosedLoop, NoisyDelayedFixesAndSlipStillReachWaypointsWithinFifteenMi
   Navigator nav{NavigatorConfig{}};
   std::mt19937 rng(3);
   std::normal_distribution<double> noise_xy(0.0, 0.005), noise_theta(0.0, 0.003);
-  const Eigen::Matrix3d fix_covariance = Eigen::Vector3d(0.005 * 0.005, 0.005 * 0.005, 0.003 * 0.003).asDiagonal();
+  const Eigen::Matrix3d fix_covariance =
+      Eigen::Vector3d(0.005 * 0.005, 0.005 * 0.005, 0.003 * 0.003).asDiagonal();
 
   NavGoal goal;
   goal.goal_id = 1;
@@ -58,7 +59,8 @@ TEST(FusedClosedLoop, NoisyDelayedFixesAndSlipStillReachWaypointsWithinFifteenMi
       const auto& [scan_time, scan_pose] = truth[truth.size() - 5];
       const Pose2 measured{scan_pose.x + noise_xy(rng), scan_pose.y + noise_xy(rng),
                            wrap_angle(scan_pose.theta + noise_theta(rng))};
-      if (fusion.add_fix({scan_time, measured, fix_covariance, FixQuality::kGood}) == FixResult::kRejectedGate) {
+      if (fusion.add_fix({scan_time, measured, fix_covariance, FixQuality::kGood}) ==
+          FixResult::kRejectedGate) {
         ++rejected;
       }
     }
@@ -76,7 +78,8 @@ TEST(FusedClosedLoop, NoisyDelayedFixesAndSlipStillReachWaypointsWithinFifteenMi
       plant.command({cmd.vx, cmd.vy, cmd.wz}, now);
     }
   }
-  ASSERT_EQ(nav.status().state, NavState::kArrived) << to_string(nav.status().state) << " " << nav.status().reason;
+  ASSERT_EQ(nav.status().state, NavState::kArrived)
+      << to_string(nav.status().state) << " " << nav.status().reason;
   ASSERT_EQ(errors_xy.size(), goal.waypoints.size());
   std::printf("mission %.1f s, %d fixes gated out; true errors:", now * 1e-6, rejected);
   for (size_t i = 0; i < errors_xy.size(); ++i) {

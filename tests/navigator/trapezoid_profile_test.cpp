@@ -29,7 +29,8 @@ Profile1d follow(double distance, const ProfileLimits& limits, double duration) 
     out.peak_speed = std::max(out.peak_speed, std::abs(v));
     p += v * dt;
     out.overshoot = std::max(out.overshoot, p - distance);
-    if (out.time_to_creep == 0.0 && std::abs(distance - p) <= limits.creep_distance) out.time_to_creep = i * dt;
+    if (out.time_to_creep == 0.0 && std::abs(distance - p) <= limits.creep_distance)
+      out.time_to_creep = i * dt;
   }
   out.final_error = std::abs(distance - p);
   return out;

@@ -17,8 +17,8 @@ namespace {
 
 using testing::kT0;
 
-heartbeat_t beat(const std::string& service, int32_t pid, int64_t decode_errors, float p99_us, int64_t in = 100,
-                 int64_t out = 99) {
+heartbeat_t beat(const std::string& service, int32_t pid, int64_t decode_errors, float p99_us,
+                 int64_t in = 100, int64_t out = 99) {
   heartbeat_t hb{};
   hb.service = service;
   hb.pid = pid;

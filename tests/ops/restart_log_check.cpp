@@ -11,8 +11,8 @@
 
 #include "log_reader.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 #include <refloc/heartbeat_t.hpp>
 #include <refloc/nav_status_t.hpp>
 #include <refloc/pose2d_t.hpp>
@@ -41,8 +41,8 @@ struct Kill {
 struct Event {
   int64_t log_utime = 0;
   std::string channel;
-  bool ok = true;     ///< status OK where the message has one; DRIVING/ARRIVED for NAV_STATUS
-  int mode = -1;      ///< REFLECTOR_MATCHES mode
+  bool ok = true;       ///< status OK where the message has one; DRIVING/ARRIVED for NAV_STATUS
+  int mode = -1;        ///< REFLECTOR_MATCHES mode
   std::string service;  ///< HEARTBEAT
   int pid = 0;
   int64_t start_utime = 0;  ///< HEARTBEAT: utime - uptime
@@ -57,10 +57,13 @@ std::optional<T> decode(const LogEventView& e) {
 
 /// The channel that shows a restarted service doing its job again.
 std::string output_channel(const std::string& service) {
-  static const std::map<std::string, std::string> channels{
-      {"lms100_driver", "LMS100_SCAN"},  {"reflector_extractor", "REFLECTORS"},
-      {"reflector_matcher", "REFLECTOR_MATCHES"}, {"pose_solver", "LASER_POSE"},
-      {"mecanum_odometry", "ODOMETRY"}, {"pose_fusion", "POSE"}, {"navigator", "NAV_STATUS"}};
+  static const std::map<std::string, std::string> channels{{"lms100_driver", "LMS100_SCAN"},
+                                                           {"reflector_extractor", "REFLECTORS"},
+                                                           {"reflector_matcher", "REFLECTOR_MATCHES"},
+                                                           {"pose_solver", "LASER_POSE"},
+                                                           {"mecanum_odometry", "ODOMETRY"},
+                                                           {"pose_fusion", "POSE"},
+                                                           {"navigator", "NAV_STATUS"}};
   const auto it = channels.find(service);
   return it == channels.end() ? "" : it->second;
 }
@@ -107,8 +110,8 @@ std::vector<Kill> read_kills(const std::string& path) {
   return kills;
 }
 
-int check(const std::vector<Event>& events, const std::vector<Kill>& kills, double max_pose_gap, double max_to_ok,
-          double max_matcher_ok) {
+int check(const std::vector<Event>& events, const std::vector<Kill>& kills, double max_pose_gap,
+          double max_to_ok, double max_matcher_ok) {
   int failures = 0;
   const auto fail = [&](const std::string& what) {
     fmt::print("FAIL: {}\n", what);
@@ -146,7 +149,8 @@ int check(const std::vector<Event>& events, const std::vector<Kill>& kills, doub
     }
     for (const Event& e : events) {
       // Messages received after the new process started are its own: the old one was dead before it.
-      if (e.channel != channel || e.log_utime <= std::max(new_start, kill.kill_utime) || e.log_utime > to) continue;
+      if (e.channel != channel || e.log_utime <= std::max(new_start, kill.kill_utime) || e.log_utime > to)
+        continue;
       if (e.ok && !first_output) first_output = e.log_utime;
       if (kill.service == "reflector_matcher" && !first_ok_matches) {
         ++scans_before_ok;
@@ -169,7 +173,8 @@ int check(const std::vector<Event>& events, const std::vector<Kill>& kills, doub
     }
     fmt::print("{:<20} {:>12.0f} {:>15.0f} {:>11.0f} {:>10.0f}  {}\n", kill.service, gap_ms,
                1e-3 * static_cast<double>(max_ok_gap), restart_ms, to_ok_ms, notes);
-    if (gap_ms > max_pose_gap * 1e3) fail(fmt::format("{}: POSE gap {:.0f} ms > {:.0f} ms", kill.service, gap_ms, max_pose_gap * 1e3));
+    if (gap_ms > max_pose_gap * 1e3)
+      fail(fmt::format("{}: POSE gap {:.0f} ms > {:.0f} ms", kill.service, gap_ms, max_pose_gap * 1e3));
     if (!first_output) {
       fail(fmt::format("{}: no OK {} from the restarted process", kill.service, channel));
     } else if (to_ok_ms > max_to_ok * 1e3) {
@@ -181,11 +186,14 @@ int check(const std::vector<Event>& events, const std::vector<Kill>& kills, doub
         fail("reflector_matcher: no OK REFLECTOR_MATCHES after its restart");
       } else {
         if (first_ok_mode != reflector_matches_t::MODE_GLOBAL) {
-          fail("reflector_matcher: the first OK after the restart came from tracking, not global relocalization");
+          fail(
+              "reflector_matcher: the first OK after the restart came from tracking, not global "
+              "relocalization");
         }
         const double ok_after_start = 1e-6 * static_cast<double>(*first_ok_matches - new_start);
         if (ok_after_start > max_matcher_ok) {
-          fail(fmt::format("reflector_matcher: OK {:.2f} s after its start > {:.2f} s", ok_after_start, max_matcher_ok));
+          fail(fmt::format("reflector_matcher: OK {:.2f} s after its start > {:.2f} s", ok_after_start,
+                           max_matcher_ok));
         }
       }
     }
@@ -201,9 +209,11 @@ int main(int argc, char** argv) {
   std::string log_file, kills_file;
   double max_pose_gap = 1.0, max_to_ok = 3.0, max_matcher_ok = 1.0;
   app.add_option("--log", log_file, "LCM log")->required();
-  app.add_option("--kills", kills_file, "kill schedule: service old_pid kill_utime new_pid per line")->required();
+  app.add_option("--kills", kills_file, "kill schedule: service old_pid kill_utime new_pid per line")
+      ->required();
   app.add_option("--max-pose-gap", max_pose_gap, "[s]")->capture_default_str();
-  app.add_option("--max-to-ok", max_to_ok, "kill -> first OK output of the new process [s]")->capture_default_str();
+  app.add_option("--max-to-ok", max_to_ok, "kill -> first OK output of the new process [s]")
+      ->capture_default_str();
   app.add_option("--max-matcher-ok", max_matcher_ok, "matcher start -> first OK [s]")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
@@ -214,7 +224,8 @@ int main(int argc, char** argv) {
     }
     const auto events = refloc::read_log(log_file);
     const int failures = refloc::check(events, kills, max_pose_gap, max_to_ok, max_matcher_ok);
-    fmt::print("{}\n", failures == 0 ? "restart checks: PASS" : fmt::format("restart checks: {} FAILED", failures));
+    fmt::print("{}\n",
+               failures == 0 ? "restart checks: PASS" : fmt::format("restart checks: {} FAILED", failures));
     return failures == 0 ? 0 : 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "restart_log_check: {}\n", e.what());

@@ -41,19 +41,22 @@ TEST(LocalizationChain, EmulatorToSolverGivesThePoseWithin10mm) {
   const std::string log_dir = ::testing::TempDir();
   const std::string lcm_arg = "--lcm-url=" + kUrl;
 
-  testing::ChildProcess emulator({kBin + "lms100_emulator", "--bind", "127.0.0.1", "--port", "2111", "--world",
-                                  config + "paper_cell.json", "--pose",
-                                  fmt::format("{},{},{}", map_T_laser.x, map_T_laser.y, map_T_laser.theta), lcm_arg},
-                                 log_dir + "chain_emulator.log");
+  testing::ChildProcess emulator(
+      {kBin + "lms100_emulator", "--bind", "127.0.0.1", "--port", "2111", "--world",
+       config + "paper_cell.json", "--pose",
+       fmt::format("{},{},{}", map_T_laser.x, map_T_laser.y, map_T_laser.theta), lcm_arg},
+      log_dir + "chain_emulator.log");
   testing::ChildProcess driver({kBin + "lms100_driver", "--host", "127.0.0.1", "--port", "2111", "--config",
                                 config + "lms100_driver.json", lcm_arg},
                                log_dir + "chain_driver.log");
-  testing::ChildProcess extractor({kBin + "reflector_extractor", "--config", config + "reflector_extractor.json",
-                                   "--robot", config + "robot.json", lcm_arg},
-                                  log_dir + "chain_extractor.log");
-  testing::ChildProcess matcher({kBin + "reflector_matcher", "--config", config + "reflector_matcher.json", "--map",
-                                 config + "map_paper_cell.json", "--robot", config + "robot.json", lcm_arg},
-                                log_dir + "chain_matcher.log");
+  testing::ChildProcess extractor(
+      {kBin + "reflector_extractor", "--config", config + "reflector_extractor.json", "--robot",
+       config + "robot.json", lcm_arg},
+      log_dir + "chain_extractor.log");
+  testing::ChildProcess matcher(
+      {kBin + "reflector_matcher", "--config", config + "reflector_matcher.json", "--map",
+       config + "map_paper_cell.json", "--robot", config + "robot.json", lcm_arg},
+      log_dir + "chain_matcher.log");
   testing::ChildProcess solver({kBin + "pose_solver", "--config", config + "pose_solver.json", "--robot",
                                 config + "robot.json", lcm_arg},
                                log_dir + "chain_solver.log");
@@ -82,7 +85,8 @@ TEST(LocalizationChain, EmulatorToSolverGivesThePoseWithin10mm) {
     worst = std::max(worst, err);
     ++n;
   }
-  std::printf("%d OK fixes: RMS error %.2f mm, worst %.2f mm\n", n, 1000 * std::sqrt(sum_sq / n), 1000 * worst);
+  std::printf("%d OK fixes: RMS error %.2f mm, worst %.2f mm\n", n, 1000 * std::sqrt(sum_sq / n),
+              1000 * worst);
 }
 
 }  // namespace

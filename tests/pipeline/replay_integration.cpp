@@ -65,7 +65,9 @@ struct Inbox {
     result.sequence.push_back(*m);
     result.laser_poses[m->utime] = *m;
   }
-  void on_heartbeat(const lcm::ReceiveBuffer*, const std::string&, const heartbeat_t* m) { pids.insert(m->pid); }
+  void on_heartbeat(const lcm::ReceiveBuffer*, const std::string&, const heartbeat_t* m) {
+    pids.insert(m->pid);
+  }
 };
 
 /// Fresh extractor, matcher and solver processes; the log's inputs played into them once.
@@ -77,12 +79,16 @@ ReplayResult replay_once(lcm::LCM& lcm, Inbox& inbox, const std::string& tag) {
   while (lcm.handleTimeout(0) > 0) {
   }
   inbox = Inbox{};
-  testing::ChildProcess extractor({kBin + "reflector_extractor", "--config", config + "reflector_extractor.json",
-                                   "--robot", config + "robot.json", url}, logs + "extractor.log");
+  testing::ChildProcess extractor(
+      {kBin + "reflector_extractor", "--config", config + "reflector_extractor.json", "--robot",
+       config + "robot.json", url},
+      logs + "extractor.log");
   testing::ChildProcess matcher({kBin + "reflector_matcher", "--config", config + "reflector_matcher.json",
-                                 "--robot", config + "robot.json", url}, logs + "matcher.log");
-  testing::ChildProcess solver({kBin + "pose_solver", "--config", config + "pose_solver.json", "--robot",
-                                config + "robot.json", url}, logs + "solver.log");
+                                 "--robot", config + "robot.json", url},
+                                logs + "matcher.log");
+  testing::ChildProcess solver(
+      {kBin + "pose_solver", "--config", config + "pose_solver.json", "--robot", config + "robot.json", url},
+      logs + "solver.log");
   // Services announce themselves with their first heartbeat once they are subscribed.
   const std::set<int32_t> children{extractor.pid(), matcher.pid(), solver.pid()};
   const auto all_up = [&] {
@@ -95,8 +101,9 @@ ReplayResult replay_once(lcm::LCM& lcm, Inbox& inbox, const std::string& tag) {
   EXPECT_TRUE(all_up()) << tag << ": not every service sent a heartbeat";
   inbox.result = ReplayResult{};  // nothing but this run's poses
 
-  testing::ChildProcess player({"/usr/bin/lcm-logplayer", "--lcm-url=" + kUrl,
-                                "--regexp=^(LMS100_SCAN|ODOMETRY|POSE)$", kLog}, logs + "player.log");
+  testing::ChildProcess player(
+      {"/usr/bin/lcm-logplayer", "--lcm-url=" + kUrl, "--regexp=^(LMS100_SCAN|ODOMETRY|POSE)$", kLog},
+      logs + "player.log");
   deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
   while (player.running() && std::chrono::steady_clock::now() < deadline) lcm.handleTimeout(50);
   const auto drain = std::chrono::steady_clock::now() + std::chrono::milliseconds(1000);
@@ -124,7 +131,8 @@ std::vector<std::string> differing_fields(const pose2d_t& a, const pose2d_t& b) 
 /// reports during that first second has changed since the sample was recorded.
 constexpr size_t kColdStartScans = 60;  ///< 1.2 s at 50 Hz
 
-void expect_reproduces_recording(const Recorded& recorded, const ReplayResult& replay, const std::string& tag) {
+void expect_reproduces_recording(const Recorded& recorded, const ReplayResult& replay,
+                                 const std::string& tag) {
   size_t scan = 0, cold_start = recorded.laser_poses.size(), compared = 0, same_status = 0, reported = 0;
   double worst_xy = 0.0, worst_theta = 0.0;
   for (const auto& [utime, live] : recorded.laser_poses) {
@@ -146,10 +154,12 @@ void expect_reproduces_recording(const Recorded& recorded, const ReplayResult& r
     worst_xy = std::max(worst_xy, std::hypot(replayed.x - live.x, replayed.y - live.y));
     worst_theta = std::max(worst_theta, std::abs(std::remainder(replayed.theta - live.theta, 2 * M_PI)));
   }
-  std::printf("%s: recorded %zu, replayed %zu, first OK at scan %zu, compared %zu after the cold start, same status %zu, "
-              "worst difference %.3f mm %.4f deg\n",
-              tag.c_str(), recorded.laser_poses.size(), replay.laser_poses.size(), cold_start, compared, same_status,
-              1000 * worst_xy, worst_theta * 180 / M_PI);
+  std::printf(
+      "%s: recorded %zu, replayed %zu, first OK at scan %zu, compared %zu after the cold start, same status "
+      "%zu, "
+      "worst difference %.3f mm %.4f deg\n",
+      tag.c_str(), recorded.laser_poses.size(), replay.laser_poses.size(), cold_start, compared, same_status,
+      1000 * worst_xy, worst_theta * 180 / M_PI);
   EXPECT_LE(cold_start, kColdStartScans) << tag << ": no OK fix within the cold start";
   EXPECT_GE(compared, (recorded.laser_poses.size() - kColdStartScans) * 95 / 100) << tag;
   EXPECT_GE(same_status, compared * 98 / 100) << tag;
@@ -178,7 +188,8 @@ TEST(Replay, LoggedScansThroughExtractorMatcherSolverReproduceTheRecordedLaserPo
   for (const ReplayResult* run : {&first, &second}) {
     EXPECT_EQ(run->laser_poses.size(), run->sequence.size()) << "one LASER_POSE per scan";
     for (size_t i = 1; i < run->sequence.size(); ++i)
-      EXPECT_LT(run->sequence[i - 1].utime, run->sequence[i].utime) << "LASER_POSE #" << i << " out of scan order";
+      EXPECT_LT(run->sequence[i - 1].utime, run->sequence[i].utime)
+          << "LASER_POSE #" << i << " out of scan order";
   }
   // A datagram lost on a loaded machine is a gap, not a difference; every pose
   // both runs have must be equal in every field, and gaps stay rare.
@@ -200,9 +211,10 @@ TEST(Replay, LoggedScansThroughExtractorMatcherSolverReproduceTheRecordedLaserPo
     }
   }
   const size_t only_second = second.laser_poses.size() - both;
-  std::printf("determinism: %zu of %zu LASER_POSE in both replays identical in every field; "
-              "%zu only in the first, %zu only in the second\n",
-              identical, both, only_first, only_second);
+  std::printf(
+      "determinism: %zu of %zu LASER_POSE in both replays identical in every field; "
+      "%zu only in the first, %zu only in the second\n",
+      identical, both, only_first, only_second);
   EXPECT_EQ(identical, both);
   EXPECT_GE(both, recorded.laser_poses.size() * 95 / 100);
   if (only_first + only_second == 0) {

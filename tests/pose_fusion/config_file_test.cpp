@@ -7,7 +7,8 @@ namespace refloc {
 namespace {
 
 TEST(FusionConfigFile, DeployedFileLoads) {
-  const JsonConfig file = JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/pose_fusion.json");
+  const JsonConfig file =
+      JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/pose_fusion.json");
   const FusionServiceConfig c = parse_fusion_service_config(file);
   file.reject_unknown_keys();
   EXPECT_DOUBLE_EQ(c.fusion.gate_chi2, 16.27);

@@ -19,7 +19,9 @@ constexpr int64_t kOdomPeriod = 10'000;  // 100 Hz
 constexpr int64_t kScanPeriod = 20'000;  // 50 Hz
 const BodyTwist kTwist{0.8, 0.2, 0.3};
 
-Pose2 truth_at(int64_t utime) { return Pose2{3.0, 2.0, 0.5} * exp_twist(kTwist, 1e-6 * static_cast<double>(utime - kT0)); }
+Pose2 truth_at(int64_t utime) {
+  return Pose2{3.0, 2.0, 0.5} * exp_twist(kTwist, 1e-6 * static_cast<double>(utime - kT0));
+}
 
 Eigen::Matrix3d fix_covariance() { return Eigen::Vector3d(2.5e-5, 2.5e-5, 1e-5).asDiagonal(); }
 
@@ -31,14 +33,18 @@ class FusionHarness {
   /// An ODOMETRY message of an odometry service that started at odom_start_utime (its origin).
   void odometry(int64_t utime, int64_t odom_start_utime) {
     const Pose2 odom_T_robot = truth_at(odom_start_utime).inverse() * truth_at(utime);
-    const double distance = std::hypot(kTwist.vx, kTwist.vy) * 1e-6 * static_cast<double>(utime - odom_start_utime);
+    const double distance =
+        std::hypot(kTwist.vx, kTwist.vy) * 1e-6 * static_cast<double>(utime - odom_start_utime);
     const OdometryStep step = continuity_.next({utime, odom_T_robot, distance});
     last_kind = step.kind;
     const Eigen::Matrix3d q = increment_covariance(step.delta, OdometryNoise{});
     if (step.kind == OdometryStepKind::kContinuous) fusion_.add_odometry(utime, step.delta, q);
-    if (step.kind == OdometryStepKind::kSeam) fusion_.add_odometry_seam(utime, step.delta, q + step.unobserved_q);
+    if (step.kind == OdometryStepKind::kSeam)
+      fusion_.add_odometry_seam(utime, step.delta, q + step.unobserved_q);
   }
-  FixResult fix(int64_t utime) { return fusion_.add_fix({utime, truth_at(utime), fix_covariance(), FixQuality::kGood}); }
+  FixResult fix(int64_t utime) {
+    return fusion_.add_fix({utime, truth_at(utime), fix_covariance(), FixQuality::kGood});
+  }
   double error_m(int64_t utime) const {
     const Pose2 e = fusion_.estimate().map_T_robot, t = truth_at(utime);
     return std::hypot(e.x - t.x, e.y - t.y);
@@ -107,7 +113,8 @@ TEST(PoseFusion, OdometryRestartWhileMovingIsReanchoredByTheFixesOfTheOutageWith
     }
     while (next_scan + 40'000 <= t) {  // the fix for a scan arrives 40 ms after it
       const FixResult r = h.fix(next_scan);
-      accepted_or_deferred += r == FixResult::kAccepted || r == FixResult::kDeferred || r == FixResult::kInitialised;
+      accepted_or_deferred +=
+          r == FixResult::kAccepted || r == FixResult::kDeferred || r == FixResult::kInitialised;
       EXPECT_NE(r, FixResult::kRejectedGate) << "scan at " << next_scan - kT0;
       next_scan += kScanPeriod;
     }
@@ -134,7 +141,8 @@ TEST(PoseFusion, OdometryRestartWithoutFixesIsDegradedUntilTheNextFixWhichTheGat
   h.odometry(restart + kOdomPeriod, restart);
   EXPECT_EQ(h.fusion().status(restart + kOdomPeriod), FusionStatus::kDegraded);
   EXPECT_GT(h.error_m(restart + kOdomPeriod), 0.15);
-  for (int64_t t = restart + 2 * kOdomPeriod; t <= restart + 5 * kOdomPeriod; t += kOdomPeriod) h.odometry(t, restart);
+  for (int64_t t = restart + 2 * kOdomPeriod; t <= restart + 5 * kOdomPeriod; t += kOdomPeriod)
+    h.odometry(t, restart);
   EXPECT_EQ(h.fix(restart + 3 * kOdomPeriod), FixResult::kAccepted);
   EXPECT_EQ(h.fusion().status(restart + 5 * kOdomPeriod), FusionStatus::kOk);
   EXPECT_LT(h.error_m(restart + 5 * kOdomPeriod), 0.01);

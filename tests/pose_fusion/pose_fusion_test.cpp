@@ -109,8 +109,9 @@ TEST(PoseFusion, FixPullsTheEstimateAndShrinksTheCovariance) {
   fusion.add_fix(fix_at(t, biased_fix_pose(t)));
   const PoseEstimate after = fusion.estimate();
   EXPECT_LT(after.covariance.trace(), before.covariance.trace());
-  EXPECT_LT(std::hypot(after.map_T_robot.x - biased_fix_pose(t).x, after.map_T_robot.y - biased_fix_pose(t).y),
-            std::hypot(before.map_T_robot.x - biased_fix_pose(t).x, before.map_T_robot.y - biased_fix_pose(t).y));
+  EXPECT_LT(
+      std::hypot(after.map_T_robot.x - biased_fix_pose(t).x, after.map_T_robot.y - biased_fix_pose(t).y),
+      std::hypot(before.map_T_robot.x - biased_fix_pose(t).x, before.map_T_robot.y - biased_fix_pose(t).y));
 }
 
 TEST(PoseFusion, OutlierFixIsRejectedByTheGate) {

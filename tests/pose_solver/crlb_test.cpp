@@ -40,7 +40,8 @@ TEST(Crlb, MatchesTheEmpiricalCovarianceOfTheSolverOnAGoodGeometry) {
   }
   const Eigen::Matrix3d empirical = scatter / draws;
   for (int k = 0; k < 3; ++k) {
-    std::printf("axis %d: CRLB sigma %.3g, solver sigma %.3g\n", k, std::sqrt((*crlb)(k, k)), std::sqrt(empirical(k, k)));
+    std::printf("axis %d: CRLB sigma %.3g, solver sigma %.3g\n", k, std::sqrt((*crlb)(k, k)),
+                std::sqrt(empirical(k, k)));
     EXPECT_NEAR(empirical(k, k) / (*crlb)(k, k), 1.0, 0.2);
   }
 }
@@ -61,7 +62,8 @@ TEST(Crlb, MoreReflectorsNeverLoosenTheBound) {
 }
 
 TEST(Crlb, OneReflectorDoesNotDetermineThePose) {
-  EXPECT_FALSE(pose_crlb(Pose2{1, 2, 0.3}, Pose2{}, {Eigen::Vector2d(5, 5)}, RangeBearingNoise{}).has_value());
+  EXPECT_FALSE(
+      pose_crlb(Pose2{1, 2, 0.3}, Pose2{}, {Eigen::Vector2d(5, 5)}, RangeBearingNoise{}).has_value());
 }
 
 TEST(Crlb, SingleReflectorInformationMatchesTheRangeBearingModel) {

@@ -50,7 +50,8 @@ class MatcherSolverIntegration : public ::testing::Test {
   void on_pose(const lcm::ReceiveBuffer*, const std::string&, const pose2d_t* msg) { poses_.push_back(*msg); }
 
   reflector_detections_t scan_message(const ReflectorMap& map, const Pose2& map_T_robot, int64_t utime) {
-    const auto scan = testing::render_detections(map, map_T_robot * robot_T_laser_, testing::SyntheticSensor{}, rng_);
+    const auto scan =
+        testing::render_detections(map, map_T_robot * robot_T_laser_, testing::SyntheticSensor{}, rng_);
     reflector_detections_t msg{};
     msg.utime = utime;
     msg.scan_counter = static_cast<int32_t>(utime / 1000);

@@ -52,7 +52,7 @@ TEST(PaperTrilateration, Eq7ArithmeticMeanFailsNearPiWhereTheCircularMeanDoesNot
   obs[0].map_p = {1, 0};
   obs[0].bearing = -(M_PI - 0.01);  // alpha_0 = 0 - bearing = pi - 0.01
   obs[1].map_p = {1, 0};
-  obs[1].bearing = M_PI - 0.01;     // alpha_1 = -(pi - 0.01)
+  obs[1].bearing = M_PI - 0.01;  // alpha_1 = -(pi - 0.01)
   EXPECT_NEAR(paper_mean_heading(obs, {0, 0}), 0.0, 1e-12);
   EXPECT_NEAR(std::abs(circular_mean_heading(obs, nullptr, {0, 0})), M_PI, 1e-12);
 }

@@ -2,8 +2,8 @@
 
 #include "solver_scenario.hpp"
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 namespace refloc {
 namespace {
@@ -16,7 +16,8 @@ TEST(PoseSolver, RecoversThePoseWithinNoise) {
   PoseSolution solution;
   for (int trial = 0; trial < 500; ++trial) {
     const Pose2 truth{ux(rng), uy(rng), ua(rng)};
-    const auto scan = testing::render_detections(map, truth * testing::corner_mount(), testing::SyntheticSensor{}, rng);
+    const auto scan =
+        testing::render_detections(map, truth * testing::corner_mount(), testing::SyntheticSensor{}, rng);
     ASSERT_GE(scan.detections.size(), 4u);
     solver.solve(scan.detections, testing::true_matches(scan, map), solution);
     ASSERT_EQ(solution.status, SolveStatus::kOk);
@@ -37,7 +38,8 @@ TEST(PoseSolver, CovarianceIsConsistentNeesOverManyDraws) {
   double nees_sum = 0.0;
   const int draws = 3000;
   for (int i = 0; i < draws; ++i) {
-    const auto scan = testing::render_detections(map, truth * testing::corner_mount(), testing::SyntheticSensor{}, rng);
+    const auto scan =
+        testing::render_detections(map, truth * testing::corner_mount(), testing::SyntheticSensor{}, rng);
     solver.solve(scan.detections, testing::true_matches(scan, map), solution);
     ASSERT_NE(solution.status, SolveStatus::kLost);
     const Eigen::Vector3d e(solution.map_T_robot.x - truth.x, solution.map_T_robot.y - truth.y,
@@ -62,7 +64,8 @@ TEST(PoseSolver, DefaultModeIsMoreAccurateInPositionAndNoWorseInHeadingThanPaper
   for (int i = 0; i < draws; ++i) {
     // Headings away from +-pi, where eq. 7 would fail outright.
     const Pose2 truth{ux(rng), uy(rng), 0.8 * ua(rng)};
-    const auto scan = testing::render_detections(map, truth * testing::corner_mount(), testing::SyntheticSensor{}, rng);
+    const auto scan =
+        testing::render_detections(map, truth * testing::corner_mount(), testing::SyntheticSensor{}, rng);
     const auto matches = testing::true_matches(scan, map);
     paper.solve(scan.detections, matches, a);
     joint.solve(scan.detections, matches, b);
@@ -73,8 +76,9 @@ TEST(PoseSolver, DefaultModeIsMoreAccurateInPositionAndNoWorseInHeadingThanPaper
   }
   const double paper_xy = std::sqrt(paper_xy2 / draws), joint_xy = std::sqrt(joint_xy2 / draws);
   const double paper_th = std::sqrt(paper_th2 / draws), joint_th = std::sqrt(joint_th2 / draws);
-  std::printf("RMS position error: paper %.2f mm, default %.2f mm; heading: paper %.3f mrad, default %.3f mrad\n",
-              1e3 * paper_xy, 1e3 * joint_xy, 1e3 * paper_th, 1e3 * joint_th);
+  std::printf(
+      "RMS position error: paper %.2f mm, default %.2f mm; heading: paper %.3f mrad, default %.3f mrad\n",
+      1e3 * paper_xy, 1e3 * joint_xy, 1e3 * paper_th, 1e3 * joint_th);
   EXPECT_LT(joint_xy, paper_xy);
   EXPECT_LT(joint_th, 1.02 * paper_th);  // heading: about equal (both use every bearing)
 }
@@ -83,7 +87,8 @@ TEST(PoseSolver, RejectsAnOutlierMatch) {
   const ReflectorMap map = testing::hall_map();
   const Pose2 truth{7.0, 5.0, -1.0};
   std::mt19937 rng(42);
-  const auto scan = testing::render_detections(map, truth * testing::corner_mount(), testing::SyntheticSensor{}, rng);
+  const auto scan =
+      testing::render_detections(map, truth * testing::corner_mount(), testing::SyntheticSensor{}, rng);
   ASSERT_GE(scan.detections.size(), 5u);
   auto matches = testing::true_matches(scan, map);
   // A wrong association: detection 2 claims the reflector of detection 4.
@@ -102,7 +107,8 @@ TEST(PoseSolver, ThreeReflectorsAreDegradedAndTwoAreLost) {
   const ReflectorMap map = testing::hall_map();
   const Pose2 truth{7.0, 5.0, 0.0};
   std::mt19937 rng(43);
-  auto scan = testing::render_detections(map, truth * testing::corner_mount(), testing::SyntheticSensor{}, rng);
+  auto scan =
+      testing::render_detections(map, truth * testing::corner_mount(), testing::SyntheticSensor{}, rng);
   auto matches = testing::true_matches(scan, map);
   PoseSolver solver(SolverConfig{}, testing::corner_mount());
   PoseSolution solution;

@@ -68,8 +68,8 @@ Tally run_pipeline(const std::string& world_file, int poses, unsigned seed) {
     t.max_err = std::max(t.max_err, e);
   }
   t.rms = solved > 0 ? std::sqrt(err2 / solved) : 0.0;
-  std::printf("%s: %d poses, matcher OK %d (wrong %d), solver OK %d, RMS %.1f mm, max %.1f mm\n", world_file.c_str(),
-              t.poses, t.match_ok, t.wrong_ok, t.solved_ok, 1e3 * t.rms, 1e3 * t.max_err);
+  std::printf("%s: %d poses, matcher OK %d (wrong %d), solver OK %d, RMS %.1f mm, max %.1f mm\n",
+              world_file.c_str(), t.poses, t.match_ok, t.wrong_ok, t.solved_ok, 1e3 * t.rms, 1e3 * t.max_err);
   return t;
 }
 
@@ -127,8 +127,8 @@ WrongPriorTally run_wrong_prior(double offset, int poses, unsigned seed) {
       (m == &checked ? t.wrong_checked : t.wrong_trusting) += wrong;
     }
   }
-  std::printf("prior %.1f m off, %d scans: checked OK %d (wrong %d), trusting OK %d (wrong %d)\n", offset, t.scans,
-              t.ok_checked, t.wrong_checked, t.ok_trusting, t.wrong_trusting);
+  std::printf("prior %.1f m off, %d scans: checked OK %d (wrong %d), trusting OK %d (wrong %d)\n", offset,
+              t.scans, t.ok_checked, t.wrong_checked, t.ok_trusting, t.wrong_trusting);
   return t;
 }
 

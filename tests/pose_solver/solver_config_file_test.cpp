@@ -8,7 +8,8 @@ namespace refloc {
 namespace {
 
 TEST(SolverConfigFile, DeployedFileIsValidAndComplete) {
-  const JsonConfig file = JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/pose_solver.json");
+  const JsonConfig file =
+      JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/pose_solver.json");
   const SolverServiceConfig c = parse_solver_service_config(file);
   EXPECT_NO_THROW(file.reject_unknown_keys());
   EXPECT_EQ(c.solver.mode, SolverMode::kDefault);

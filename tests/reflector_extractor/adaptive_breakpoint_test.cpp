@@ -48,7 +48,8 @@ TEST(AdaptiveBreakpoint, TwoReflectors30cmApartOneBehindTheOtherGiveTwoClusters)
   for (double range : {1.0, 2.0, 3.0}) {
     for (uint32_t seed = 0; seed < 20; ++seed) {
       SyntheticScene scene;
-      scene.cylinders = {test::cylinder_at(range, 0.0), test::cylinder_at(range + 0.3, std::atan2(0.1, range))};
+      scene.cylinders = {test::cylinder_at(range, 0.0),
+                         test::cylinder_at(range + 0.3, std::atan2(0.1, range))};
       ASSERT_EQ(cluster_scene(scene, seed).size(), 2u) << "range " << range << " seed " << seed;
     }
   }

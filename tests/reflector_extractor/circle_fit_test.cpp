@@ -1,7 +1,7 @@
 #include "reflector_extractor/circle_fit.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include <cmath>
 #include <random>
@@ -13,7 +13,8 @@ constexpr double kDeg = M_PI / 180.0;
 constexpr double kSigma = 0.012;  // LMS100 range noise [m]
 
 /// Beams of a 0.5 deg scanner that hit a circle (centre, radius), with range noise.
-std::vector<FitBeam> noisy_beams(const Eigen::Vector2d& center, double radius, double sigma, std::mt19937& rng) {
+std::vector<FitBeam> noisy_beams(const Eigen::Vector2d& center, double radius, double sigma,
+                                 std::mt19937& rng) {
   std::normal_distribution<double> noise(0.0, sigma);
   std::vector<FitBeam> beams;
   for (double angle = -135.0 * kDeg; angle <= 135.0 * kDeg + 1e-9; angle += 0.5 * kDeg) {

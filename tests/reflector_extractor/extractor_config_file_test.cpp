@@ -10,7 +10,8 @@ namespace refloc {
 namespace {
 
 TEST(ExtractorConfigFile, DeployedFileIsValidAndEqualsTheCodeDefaults) {
-  const JsonConfig file = JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/reflector_extractor.json");
+  const JsonConfig file =
+      JsonConfig::load_file(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/reflector_extractor.json");
   const ExtractorServiceConfig c = parse_extractor_service_config(file);
   EXPECT_NO_THROW(file.reject_unknown_keys());
   const ExtractorConfig defaults;
@@ -43,7 +44,8 @@ TEST(ExtractorConfigFile, OutOfRangeValueNamesItsPointer) {
     parse_extractor_service_config(file);
     FAIL() << "no error";
   } catch (const ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("x.json: /default/fit/min_incidence_cos"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("x.json: /default/fit/min_incidence_cos"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -6,8 +6,8 @@
 #include "lms100_emulator/scan_renderer.hpp"
 #include "reflector_extractor/extractor.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include <cmath>
 #include <cstdio>
@@ -18,7 +18,9 @@ namespace {
 
 using sim::SurfaceKind;
 
-Eigen::Vector2d polar(double range, double bearing) { return {range * std::cos(bearing), range * std::sin(bearing)}; }
+Eigen::Vector2d polar(double range, double bearing) {
+  return {range * std::cos(bearing), range * std::sin(bearing)};
+}
 
 sim::WorldSegment strip(double range, double bearing, double width, double yaw, SurfaceKind kind) {
   const Eigen::Vector2d center = polar(range, bearing);
@@ -29,8 +31,8 @@ sim::WorldSegment strip(double range, double bearing, double width, double yaw, 
 enum class Target { kCylinder, kTape12cm, kTape30cm, kMetal30cm };
 
 struct Outcome {
-  double accepted = 0.0;  ///< share of scans with a detection
-  double rms_error = 0.0; ///< of accepted cylinder centres [m]
+  double accepted = 0.0;   ///< share of scans with a detection
+  double rms_error = 0.0;  ///< of accepted cylinder centres [m]
   double mean_nees = 0.0;
   int fits = 0;
 };
@@ -121,8 +123,8 @@ TEST(ExtractorOnEmulatorScans, KnownRadiusFitBeatsThePaperFitAt1To3m) {
   for (double range : {1.0, 2.0, 3.0}) {
     const Outcome ours = run(Target::kCylinder, range, 200, ExtractorConfig{}, 5);
     const Outcome theirs = run(Target::kCylinder, range, 200, paper, 5);
-    std::printf("%3.1f m: rms known radius %5.1f mm, paper algebraic fit %6.1f mm\n", range, 1e3 * ours.rms_error,
-                1e3 * theirs.rms_error);
+    std::printf("%3.1f m: rms known radius %5.1f mm, paper algebraic fit %6.1f mm\n", range,
+                1e3 * ours.rms_error, 1e3 * theirs.rms_error);
     EXPECT_LT(2.0 * ours.rms_error, theirs.rms_error) << range;
   }
 }
@@ -135,8 +137,8 @@ TEST(ExtractorOnEmulatorScans, WideTapeAndMetalPlatesAreRejected) {
   for (double range = 0.5; range <= 9.0; range += 0.5) {
     const Outcome tape = run(Target::kTape30cm, range, 50, config, 21);
     const Outcome metal = run(Target::kMetal30cm, range, 50, config, 22);
-    std::printf("%4.1f m: accepted 30 cm tape %5.1f %%, 30 cm metal plate %5.1f %%\n", range, 100.0 * tape.accepted,
-                100.0 * metal.accepted);
+    std::printf("%4.1f m: accepted 30 cm tape %5.1f %%, 30 cm metal plate %5.1f %%\n", range,
+                100.0 * tape.accepted, 100.0 * metal.accepted);
     tape_accepted += tape.accepted;
     metal_accepted += metal.accepted;
     ++ranges;

@@ -46,7 +46,8 @@ class ExtractorService : public ::testing::Test {
   /// Publish msg on channel every 200 ms (the service may still be starting) until the
   /// REFLECTORS for utime is back.
   template <class Message>
-  std::optional<reflector_detections_t> exchange(const std::string& channel, const Message& msg, int64_t utime) {
+  std::optional<reflector_detections_t> exchange(const std::string& channel, const Message& msg,
+                                                 int64_t utime) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
     auto next_publish = std::chrono::steady_clock::now();
     while (std::chrono::steady_clock::now() < deadline) {
@@ -81,7 +82,8 @@ TEST_F(ExtractorService, PublishesMotionCompensatedDetectionsOfEachScan) {
   SyntheticScene scene;
   for (double bearing_deg : {-100.0, 0.0, 100.0}) {
     SyntheticCylinder c;
-    c.laser_p_center = 2.0 * Eigen::Vector2d(std::cos(bearing_deg * M_PI / 180.0), std::sin(bearing_deg * M_PI / 180.0));
+    c.laser_p_center =
+        2.0 * Eigen::Vector2d(std::cos(bearing_deg * M_PI / 180.0), std::sin(bearing_deg * M_PI / 180.0));
     scene.cylinders.push_back(c);
   }
   std::mt19937 rng(4);
@@ -131,7 +133,8 @@ TEST_F(ExtractorService, PublishesMotionCompensatedDetectionsOfEachScan) {
 TEST(ExtractorServiceConfig, MisspeltKeyExitsWithCode2NamingTheKey) {
   const std::string path = std::string(REFLOC_BINARY_DIR) + "/reflector_extractor_bad_config.json";
   std::ofstream(path) << R"({"mode": "default", "reflector_radius": 0.06})";
-  const auto result = testing::run_command(kBin + "reflector_extractor --lcm-url=" + kUrl + " --config " + path);
+  const auto result =
+      testing::run_command(kBin + "reflector_extractor --lcm-url=" + kUrl + " --config " + path);
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.output.find("/reflector_radius: unknown key"), std::string::npos) << result.output;
 }

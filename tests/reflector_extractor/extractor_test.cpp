@@ -3,8 +3,8 @@
 #include "reflector_extractor/energy_filter.hpp"
 #include "scenes.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include <cmath>
 
@@ -34,7 +34,8 @@ TEST(ReflectorExtractor, FindsACylinderAndFillsEveryField) {
   EXPECT_GE(d.num_beams, 6);
   EXPECT_LE(d.num_beams, 8);
   const int middle = d.first_beam + (d.num_beams - 1) / 2;
-  EXPECT_NEAR(static_cast<double>(d.utime), static_cast<double>(scan.beam_utime(static_cast<size_t>(middle))), 30.0);
+  EXPECT_NEAR(static_cast<double>(d.utime), static_cast<double>(scan.beam_utime(static_cast<size_t>(middle))),
+              30.0);
   EXPECT_GT(d.mean_rssi, 180.0);
   EXPECT_DOUBLE_EQ(d.fitted_radius_m > 0.0, true);
   EXPECT_GT(d.covariance.determinant(), 0.0);
@@ -44,10 +45,12 @@ TEST(ReflectorExtractor, FindsACylinderAndFillsEveryField) {
 
 TEST(ReflectorExtractor, EightReflectorsAroundTheSensorAreAllFound) {
   SyntheticScene scene;
-  for (int k = 0; k < 8; ++k) scene.cylinders.push_back(test::cylinder_at(1.0 + 0.5 * k, (-120.0 + 30.0 * k) * kDeg));
+  for (int k = 0; k < 8; ++k)
+    scene.cylinders.push_back(test::cylinder_at(1.0 + 0.5 * k, (-120.0 + 30.0 * k) * kDeg));
   int found = 0;
   ReflectorExtractor extractor;
-  for (uint32_t seed = 0; seed < 50; ++seed) found += static_cast<int>(extractor.extract(render(scene, seed)).size());
+  for (uint32_t seed = 0; seed < 50; ++seed)
+    found += static_cast<int>(extractor.extract(render(scene, seed)).size());
   EXPECT_GE(found, 8 * 50 * 95 / 100);  // the flat-surface test costs ~2 % at 3-5 beams
   EXPECT_LE(found, 8 * 50);
 }
@@ -132,7 +135,8 @@ TEST(ReflectorExtractor, WithMinBeams1AFarSingleBeamGetsABeamStepWideCovariance)
 
 TEST(ReflectorExtractor, ExtractDoesNotReallocateItsOutputOnceWarm) {
   SyntheticScene scene;
-  for (int k = 0; k < 8; ++k) scene.cylinders.push_back(test::cylinder_at(2.0 + k, (-100.0 + 25.0 * k) * kDeg));
+  for (int k = 0; k < 8; ++k)
+    scene.cylinders.push_back(test::cylinder_at(2.0 + k, (-100.0 + 25.0 * k) * kDeg));
   const LaserScan scan = render(scene, 9);
   ReflectorExtractor extractor;
   const ReflectorDetection* first = extractor.extract(scan).data();
@@ -217,7 +221,8 @@ TEST(PaperMode, CentreIsTheAlgebraicFitOfTheClusterAndDBarIsReported) {
   for (int i = detections[0].first_beam; i < detections[0].first_beam + detections[0].num_beams; ++i) {
     FitBeam b;
     const double a = scan.beam_angle(static_cast<size_t>(i));
-    b.point = static_cast<double>(scan.ranges[static_cast<size_t>(i)]) * Eigen::Vector2d(std::cos(a), std::sin(a));
+    b.point =
+        static_cast<double>(scan.ranges[static_cast<size_t>(i)]) * Eigen::Vector2d(std::cos(a), std::sin(a));
     beams.push_back(b);
   }
   CircleFit fit;

@@ -41,8 +41,9 @@ TEST(GlobalRelocalization, NeverWrongOkOverThousandRandomPosesInATwentyReflector
   }
   RecordProperty("ok", ok);
   RecordProperty("ambiguous", ambiguous);
-  std::printf("relocalization: %d OK (%d with every detection matched), %d ambiguous, %d/%d OK with >= 4 seen\n",
-              ok, ok_correct, ambiguous, ok_with_four, with_four);
+  std::printf(
+      "relocalization: %d OK (%d with every detection matched), %d ambiguous, %d/%d OK with >= 4 seen\n", ok,
+      ok_correct, ambiguous, ok_with_four, with_four);
   EXPECT_EQ(wrong_ok, 0);
   EXPECT_GE(ok_with_four, with_four * 95 / 100);
 }
@@ -90,13 +91,16 @@ TEST(GlobalRelocalization, NeverWrongOkWithSpuriousAndMissedDetections) {
     matcher.match(scan.detections, nullptr, result);
     // A match of the ghost is wrong by definition.
     bool ghost_matched = false;
-    for (const auto& m : result.matches) ghost_matched = ghost_matched || scan.map_index[static_cast<size_t>(m.detection_index)] < 0;
+    for (const auto& m : result.matches)
+      ghost_matched = ghost_matched || scan.map_index[static_cast<size_t>(m.detection_index)] < 0;
     if (result.status == MatchStatus::kOk) {
       ++ok;
       wrong_ok += ghost_matched || !approx_equal(result.map_T_laser, truth, 0.2, 5.0 * M_PI / 180.0);
       if (!ghost_matched) {
         for (const auto& m : result.matches) {
-          wrong_ok += map.reflectors[static_cast<size_t>(scan.map_index[static_cast<size_t>(m.detection_index)])].id != m.map_id;
+          wrong_ok +=
+              map.reflectors[static_cast<size_t>(scan.map_index[static_cast<size_t>(m.detection_index)])]
+                  .id != m.map_id;
         }
       }
     }

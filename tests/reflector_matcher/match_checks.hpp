@@ -8,7 +8,8 @@
 namespace refloc::testing {
 
 /// Every reported match pairs a detection with the reflector that produced it.
-inline bool all_matches_correct(const MatchResult& result, const SyntheticScan& scan, const ReflectorMap& map) {
+inline bool all_matches_correct(const MatchResult& result, const SyntheticScan& scan,
+                                const ReflectorMap& map) {
   for (const ReflectorMatch& m : result.matches) {
     const int truth = scan.map_index[static_cast<size_t>(m.detection_index)];
     if (map.reflectors[static_cast<size_t>(truth)].id != m.map_id) return false;

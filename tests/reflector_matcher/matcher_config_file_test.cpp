@@ -39,7 +39,8 @@ TEST(MatcherConfigFile, DegreesAndRelativeMapPathAreConverted) {
   EXPECT_EQ(c.matcher.mode, MatcherMode::kPaper);
   EXPECT_NEAR(c.matcher.paper_angle_tolerance, 3.0 * M_PI / 180.0, 1e-12);
   EXPECT_NEAR(c.matcher.distinct_pose_angle, 10.0 * M_PI / 180.0, 1e-12);
-  const MatcherServiceConfig absolute = parse_matcher_service_config(doc(R"({"map_file": "/m.json"})"), "/etc");
+  const MatcherServiceConfig absolute =
+      parse_matcher_service_config(doc(R"({"map_file": "/m.json"})"), "/etc");
   EXPECT_EQ(absolute.map_file, "/m.json");
 }
 
@@ -48,7 +49,8 @@ TEST(MatcherConfigFile, ErrorsNameTheKey) {
     parse_matcher_service_config(doc(R"({"relocalization": {"ambiguity_ratio": 1.5}})"), "");
     FAIL() << "no ConfigError";
   } catch (const ConfigError& e) {
-    EXPECT_NE(std::string(e.what()).find("test.json: /relocalization/ambiguity_ratio"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("test.json: /relocalization/ambiguity_ratio"), std::string::npos)
+        << e.what();
   }
   EXPECT_THROW(parse_matcher_service_config(doc(R"({"sensor": {"min_range_m": 30}})"), ""), ConfigError);
   EXPECT_THROW(parse_matcher_service_config(doc(R"({"mode": "fast"})"), ""), ConfigError);

@@ -53,7 +53,8 @@ TEST(PaperTriangleMatcher, RightCorrespondencesOnRandomPoses) {
     right += result.status == MatchStatus::kOk && testing::all_matches_correct(result, scan, map) &&
              result.matches.size() == scan.detections.size();
   }
-  std::printf("paper matcher: %d of %d scans with >= 3 reflectors fully and correctly matched\n", right, seen3);
+  std::printf("paper matcher: %d of %d scans with >= 3 reflectors fully and correctly matched\n", right,
+              seen3);
   EXPECT_GE(right, seen3 * 9 / 10);
 }
 

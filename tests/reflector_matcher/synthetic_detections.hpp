@@ -31,10 +31,12 @@ struct SyntheticScan {
 };
 
 /// Covariance of a point measured as (range, bearing) with these sigmas, to first order [m^2].
-inline Eigen::Matrix2d polar_covariance(double range, double bearing, double range_sigma, double bearing_sigma) {
+inline Eigen::Matrix2d polar_covariance(double range, double bearing, double range_sigma,
+                                        double bearing_sigma) {
   Eigen::Matrix2d g;
   g << std::cos(bearing), -range * std::sin(bearing), std::sin(bearing), range * std::cos(bearing);
-  return g * Eigen::Vector2d(range_sigma * range_sigma, bearing_sigma * bearing_sigma).asDiagonal() * g.transpose();
+  return g * Eigen::Vector2d(range_sigma * range_sigma, bearing_sigma * bearing_sigma).asDiagonal() *
+         g.transpose();
 }
 
 /// The map reflectors visible from map_T_laser, noise-free ranges and bearings in the laser frame.
@@ -98,7 +100,8 @@ inline ReflectorMap random_map(int n, double width, double height, double min_se
   while (static_cast<int>(map.reflectors.size()) < n) {
     const Eigen::Vector2d p(ux(rng), uy(rng));
     bool far_enough = true;
-    for (const auto& r : map.reflectors) far_enough = far_enough && (r.map_p_center - p).norm() >= min_separation;
+    for (const auto& r : map.reflectors)
+      far_enough = far_enough && (r.map_p_center - p).norm() >= min_separation;
     if (!far_enough) continue;
     MapReflector r;
     r.id = static_cast<int>(map.reflectors.size()) + 1;

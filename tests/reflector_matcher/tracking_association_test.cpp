@@ -28,7 +28,9 @@ TEST(TrackingAssociation, CorrectUnderPriorErrorOfTwentyCentimetresAndThreeDegre
     ASSERT_EQ(result.mode, MatchMode::kTracking);
     ASSERT_EQ(result.status, MatchStatus::kOk);
     ASSERT_TRUE(testing::all_matches_correct(result, scan, map));
-    EXPECT_TRUE(approx_equal(result.map_T_laser, truth, 0.1, 1.0 * M_PI / 180.0)) << result.map_T_laser.x - truth.x << " " << result.map_T_laser.y - truth.y << " " << result.map_T_laser.theta - truth.theta << " n=" << result.matches.size();
+    EXPECT_TRUE(approx_equal(result.map_T_laser, truth, 0.1, 1.0 * M_PI / 180.0))
+        << result.map_T_laser.x - truth.x << " " << result.map_T_laser.y - truth.y << " "
+        << result.map_T_laser.theta - truth.theta << " n=" << result.matches.size();
     ++tracked;
     all_seen_matched += result.matches.size() == scan.detections.size();
   }
@@ -70,7 +72,8 @@ TEST(TrackingAssociation, IgnoresASpuriousDetectionFarFromEveryReflector) {
   matcher.match(scan.detections, &prior, result);
   EXPECT_EQ(result.status, MatchStatus::kOk);
   EXPECT_EQ(result.matches.size(), scan.detections.size() - 1);
-  for (const auto& m : result.matches) EXPECT_NE(m.detection_index, static_cast<int>(scan.detections.size()) - 1);
+  for (const auto& m : result.matches)
+    EXPECT_NE(m.detection_index, static_cast<int>(scan.detections.size()) - 1);
 }
 
 }  // namespace

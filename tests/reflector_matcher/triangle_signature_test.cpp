@@ -15,7 +15,8 @@ std::array<Eigen::Vector2d, 3> moved(const std::array<Eigen::Vector2d, 3>& p, co
 }
 
 TEST(LargestAngleSignature, RightTriangleHasItsRightAngleAndLegs) {
-  const auto s = largest_angle_signature({Eigen::Vector2d(0, 0), Eigen::Vector2d(4, 0), Eigen::Vector2d(0, 3)});
+  const auto s =
+      largest_angle_signature({Eigen::Vector2d(0, 0), Eigen::Vector2d(4, 0), Eigen::Vector2d(0, 3)});
   EXPECT_NEAR(s.largest_angle, M_PI / 2, 1e-12);
   EXPECT_NEAR(s.long_side, 4.0, 1e-12);
   EXPECT_NEAR(s.short_side, 3.0, 1e-12);
@@ -28,8 +29,8 @@ TEST(LargestAngleSignature, InvariantUnderRigidMotionAndVertexOrder) {
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> u(-20, 20), ua(-M_PI, M_PI);
   for (int trial = 0; trial < 1000; ++trial) {
-    const std::array<Eigen::Vector2d, 3> p = {Eigen::Vector2d(u(rng), u(rng)), Eigen::Vector2d(u(rng), u(rng)),
-                                              Eigen::Vector2d(u(rng), u(rng))};
+    const std::array<Eigen::Vector2d, 3> p = {
+        Eigen::Vector2d(u(rng), u(rng)), Eigen::Vector2d(u(rng), u(rng)), Eigen::Vector2d(u(rng), u(rng))};
     const Pose2 t{u(rng), u(rng), ua(rng)};
     const auto a = largest_angle_signature(p);
     const auto q = moved(p, t);
@@ -45,14 +46,18 @@ TEST(LargestAngleSignature, InvariantUnderRigidMotionAndVertexOrder) {
 
 TEST(LargestAngleSignature, MirrorImageHasTheSameSignature) {
   // The paper's signature cannot tell a triangle from its mirror image.
-  const std::array<Eigen::Vector2d, 3> p = {Eigen::Vector2d(0, 0), Eigen::Vector2d(5, 1), Eigen::Vector2d(2, 3)};
-  const std::array<Eigen::Vector2d, 3> m = {Eigen::Vector2d(0, 0), Eigen::Vector2d(5, -1), Eigen::Vector2d(2, -3)};
+  const std::array<Eigen::Vector2d, 3> p = {Eigen::Vector2d(0, 0), Eigen::Vector2d(5, 1),
+                                            Eigen::Vector2d(2, 3)};
+  const std::array<Eigen::Vector2d, 3> m = {Eigen::Vector2d(0, 0), Eigen::Vector2d(5, -1),
+                                            Eigen::Vector2d(2, -3)};
   EXPECT_TRUE(signatures_match(largest_angle_signature(p), largest_angle_signature(m), 1e-9, 1e-9));
 }
 
 TEST(LargestAngleSignature, ToleranceSeparatesDifferentTriangles) {
-  const auto a = largest_angle_signature({Eigen::Vector2d(0, 0), Eigen::Vector2d(4, 0), Eigen::Vector2d(0, 3)});
-  const auto b = largest_angle_signature({Eigen::Vector2d(0, 0), Eigen::Vector2d(4.1, 0), Eigen::Vector2d(0, 3)});
+  const auto a =
+      largest_angle_signature({Eigen::Vector2d(0, 0), Eigen::Vector2d(4, 0), Eigen::Vector2d(0, 3)});
+  const auto b =
+      largest_angle_signature({Eigen::Vector2d(0, 0), Eigen::Vector2d(4.1, 0), Eigen::Vector2d(0, 3)});
   EXPECT_TRUE(signatures_match(a, b, 0.15, 0.01));
   EXPECT_FALSE(signatures_match(a, b, 0.05, 0.01));
 }
@@ -71,8 +76,8 @@ TEST(SortedSides, InvariantUnderRigidMotion) {
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> u(-20, 20), ua(-M_PI, M_PI);
   for (int trial = 0; trial < 1000; ++trial) {
-    const std::array<Eigen::Vector2d, 3> p = {Eigen::Vector2d(u(rng), u(rng)), Eigen::Vector2d(u(rng), u(rng)),
-                                              Eigen::Vector2d(u(rng), u(rng))};
+    const std::array<Eigen::Vector2d, 3> p = {
+        Eigen::Vector2d(u(rng), u(rng)), Eigen::Vector2d(u(rng), u(rng)), Eigen::Vector2d(u(rng), u(rng))};
     const auto a = sorted_sides(p);
     const auto b = sorted_sides(moved(p, Pose2{u(rng), u(rng), ua(rng)}));
     for (size_t k = 0; k < 3; ++k) {

@@ -52,7 +52,8 @@ TEST(ExpectedReflectorRange, PointBeamMeetsTheCircleOnItsAxis) {
 
 TEST(ExpectedReflectorRange, SpotAveragesOverTheCurvedSurfaceBehindTheAxisHit) {
   const Pose2 map_T_laser{0.0, 0.0, 0.0};
-  const double point = expected_reflector_range(map_T_laser, 0.0, {3.0, 0.0}, kRadius, BeamSpotModel::point_beam());
+  const double point =
+      expected_reflector_range(map_T_laser, 0.0, {3.0, 0.0}, kRadius, BeamSpotModel::point_beam());
   const double spot = expected_reflector_range(map_T_laser, 0.0, {3.0, 0.0}, kRadius, BeamSpotModel{});
   // Spot 53 mm wide at 3 m: its rays land on average ~1-2 mm deeper than the axis.
   EXPECT_GT(spot - point, 0.5e-3);
@@ -64,7 +65,8 @@ TEST(ExpectedReflectorRange, SpotStillSeesTheReflectorWhenTheAxisJustMissesIt) {
   const double angle = std::atan2(kRadius + 0.01, 3.0);  // axis passes 10 mm outside the silhouette
   EXPECT_TRUE(std::isnan(
       expected_reflector_range(map_T_laser, angle, {3.0, 0.0}, kRadius, BeamSpotModel::point_beam())));
-  EXPECT_TRUE(std::isfinite(expected_reflector_range(map_T_laser, angle, {3.0, 0.0}, kRadius, BeamSpotModel{})));
+  EXPECT_TRUE(
+      std::isfinite(expected_reflector_range(map_T_laser, angle, {3.0, 0.0}, kRadius, BeamSpotModel{})));
 }
 
 TEST(BeamRangeCrlb, SpotBoundIsLooserThanThePointBeamBound) {
@@ -73,7 +75,8 @@ TEST(BeamRangeCrlb, SpotBoundIsLooserThanThePointBeamBound) {
   const Pose2 robot_T_laser{0.2, 0.0, 0.0};
   const auto beams = beams_on_reflectors(map, map_T_robot * robot_T_laser);
   ASSERT_GE(beams.size(), 12u);
-  const auto point = beam_range_crlb(map, map_T_robot, robot_T_laser, beams, 0.012, BeamSpotModel::point_beam());
+  const auto point =
+      beam_range_crlb(map, map_T_robot, robot_T_laser, beams, 0.012, BeamSpotModel::point_beam());
   const auto spot = beam_range_crlb(map, map_T_robot, robot_T_laser, beams, 0.012, BeamSpotModel{});
   ASSERT_TRUE(point && spot);
   const double point_xy = std::sqrt((*point)(0, 0) + (*point)(1, 1));

@@ -78,7 +78,7 @@ class Harness {
         pose2d_t fix = *it;
         for (double& c : fix.covariance) c = 0.0;
         fix.covariance[0] = fix.covariance[4] = 1e-6;  // 1 mm
-        fix.covariance[8] = 1e-6;                       // 1 mrad
+        fix.covariance[8] = 1e-6;                      // 1 mrad
         fix.status = pose2d_t::STATUS_OK;
         fix.reflectors_used = 5;
         lcm_.publish("LASER_POSE", &fix);
@@ -129,7 +129,8 @@ int run() {
 
   // Safety: without fixes the fused pose turns DEGRADED after 1 s and the navigator stops.
   h.send_goal(43, {{2.5, 0.4, M_PI}});
-  if (!h.spin_until(5.0, [&] { return h.status.goal_id == 43 && h.status.state == nav_status_t::STATE_DRIVING; })) {
+  if (!h.spin_until(
+          5.0, [&] { return h.status.goal_id == 43 && h.status.state == nav_status_t::STATE_DRIVING; })) {
     return fail("goal 43 not driving");
   }
   h.spin_until(0.5, [] { return false; });
@@ -138,13 +139,15 @@ int run() {
   if (!h.spin_until(3.0, [&] { return h.status.state == nav_status_t::STATE_STOPPED_NO_POSE; })) {
     return fail("navigator did not stop without fixes");
   }
-  std::printf("stopped %.2f s after the last fix: %s\n", (monotonic_us() - fixes_off) * 1e-6, h.status.reason.c_str());
+  std::printf("stopped %.2f s after the last fix: %s\n", (monotonic_us() - fixes_off) * 1e-6,
+              h.status.reason.c_str());
   h.spin_until(1.0, [] { return false; });  // let the wheels ramp down
   const double x_stopped = h.newest_truth()->x;
   h.spin_until(0.5, [] { return false; });
   if (std::abs(h.newest_truth()->x - x_stopped) > 1e-3) return fail("robot still moving after the stop");
   h.fixes_enabled = true;
-  if (!h.spin_until(30.0, [&] { return h.status.goal_id == 43 && h.status.state == nav_status_t::STATE_ARRIVED; })) {
+  if (!h.spin_until(
+          30.0, [&] { return h.status.goal_id == 43 && h.status.state == nav_status_t::STATE_ARRIVED; })) {
     return fail("goal 43 not reached after fixes resumed");
   }
   std::printf("resumed and arrived at goal 43\n");

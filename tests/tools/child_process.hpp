@@ -20,7 +20,9 @@ class ChildProcess {
  public:
   ChildProcess() = default;
   /// Start argv[0] with the given arguments; stdout/stderr go to log_path when not empty.
-  explicit ChildProcess(const std::vector<std::string>& argv, const std::string& log_path = "") { start(argv, log_path); }
+  explicit ChildProcess(const std::vector<std::string>& argv, const std::string& log_path = "") {
+    start(argv, log_path);
+  }
   ~ChildProcess() { stop(); }
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;

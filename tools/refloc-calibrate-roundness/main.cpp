@@ -13,8 +13,8 @@
 #include "lms100_emulator/scan_renderer.hpp"
 #endif
 
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 #include <refloc/reflector_detections_t.hpp>
 
@@ -56,7 +56,8 @@ std::vector<RoundnessSample> samples_from_log(const Options& o) {
     }
     for (const reflector_t& r : msg.reflectors) samples.push_back({r.range, r.bearing, r.roundness_m});
   }
-  if (decode_errors > 0) fmt::print(stderr, "{}: {} messages on {} did not decode\n", o.log_path, decode_errors, o.channel);
+  if (decode_errors > 0)
+    fmt::print(stderr, "{}: {} messages on {} did not decode\n", o.log_path, decode_errors, o.channel);
   return samples;
 }
 
@@ -98,27 +99,31 @@ int run(const Options& o) {
   std::vector<RoundnessSample> samples;
   if (!o.log_path.empty()) {
     samples = samples_from_log(o);
-    fmt::print("{}: {} detections on {} (d-bar = their roundness_m; paper-mode logs give the paper's index)\n",
-               o.log_path, samples.size(), o.channel);
+    fmt::print(
+        "{}: {} detections on {} (d-bar = their roundness_m; paper-mode logs give the paper's index)\n",
+        o.log_path, samples.size(), o.channel);
   } else {
     PlacementGrid grid;
     grid.distance_max = o.distance_max;
     grid.scans_per_placement = o.scans;
     std::mt19937_64 rng(o.seed);
     samples = simulate_roundness_samples(grid, o.drop_points, make_renderer(o, rng));
-    fmt::print("simulated ({} renderer): {} samples from placements {:.2f}..{:.2f} m x {:.0f}..{:.0f} deg, "
-               "{} scan(s) each, first and last {} point(s) dropped\n",
-               o.renderer, samples.size(), grid.distance_min, grid.distance_max, grid.angle_min * 180.0 / M_PI,
-               grid.angle_max * 180.0 / M_PI, grid.scans_per_placement, o.drop_points);
+    fmt::print(
+        "simulated ({} renderer): {} samples from placements {:.2f}..{:.2f} m x {:.0f}..{:.0f} deg, "
+        "{} scan(s) each, first and last {} point(s) dropped\n",
+        o.renderer, samples.size(), grid.distance_min, grid.distance_max, grid.angle_min * 180.0 / M_PI,
+        grid.angle_max * 180.0 / M_PI, grid.scans_per_placement, o.drop_points);
   }
   if (!o.csv_path.empty()) {
     std::ofstream csv(o.csv_path);
     csv << "distance_m,angle_deg,d_bar_m\n";
-    for (const RoundnessSample& s : samples) csv << fmt::format("{:.4f},{:.2f},{:.6f}\n", s.distance, s.angle * 180.0 / M_PI, s.d_bar);
+    for (const RoundnessSample& s : samples)
+      csv << fmt::format("{:.4f},{:.2f},{:.6f}\n", s.distance, s.angle * 180.0 / M_PI, s.d_bar);
   }
   // The per-distance table of Figure 9 (bins of 0.25 m).
   std::map<int, std::vector<double>> by_distance;
-  for (const RoundnessSample& s : samples) by_distance[static_cast<int>(std::lround(s.distance / 0.25))].push_back(s.d_bar);
+  for (const RoundnessSample& s : samples)
+    by_distance[static_cast<int>(std::lround(s.distance / 0.25))].push_back(s.d_bar);
   fmt::print("{:>10} {:>6} {:>12} {:>12}\n", "distance_m", "n", "mean_dbar_mm", "max_dbar_mm");
   for (const auto& [bin, values] : by_distance) {
     double sum = 0.0, max = 0.0;
@@ -126,20 +131,25 @@ int run(const Options& o) {
       sum += v;
       max = std::max(max, v);
     }
-    fmt::print("{:>10.2f} {:>6} {:>12.2f} {:>12.2f}\n", bin * 0.25, values.size(), 1e3 * sum / values.size(), 1e3 * max);
+    fmt::print("{:>10.2f} {:>6} {:>12.2f} {:>12.2f}\n", bin * 0.25, values.size(), 1e3 * sum / values.size(),
+               1e3 * max);
   }
   const RoundnessLineFit fit = fit_roundness_line(samples, o.fit_min, o.fit_max, o.raise_mm * 1e-3);
   if (fit.samples_used == 0) throw std::runtime_error("not enough samples in the fit range to fit a line");
   const double fitted_offset = fit.line.offset - o.raise_mm * 1e-3;
   int under = 0;
   for (const RoundnessSample& s : samples) under += fit.line.accepts(s.d_bar, s.distance) ? 1 : 0;
-  fmt::print("fitted line over {:.2f}..{:.2f} m ({} samples, rms {:.2f} mm): d_bar = {:.2f} mm + {:.3f} mm/m * distance\n",
-             o.fit_min, o.fit_max, fit.samples_used, 1e3 * fit.residual_rms, 1e3 * fitted_offset, 1e3 * fit.line.slope);
-  fmt::print("raised by {:.0f} mm: d_bar <= {:.2f} mm + {:.3f} mm/m * distance ({} of {} samples under it)\n", o.raise_mm,
-             1e3 * fit.line.offset, 1e3 * fit.line.slope, under, samples.size());
-  fmt::print("config (deploy/config/reflector_extractor.json): \"paper\": {{\"roundness_offset_m\": {:.4f}, "
-             "\"roundness_slope\": {:.5f}}}\n",
-             fit.line.offset, fit.line.slope);
+  fmt::print(
+      "fitted line over {:.2f}..{:.2f} m ({} samples, rms {:.2f} mm): d_bar = {:.2f} mm + {:.3f} mm/m * "
+      "distance\n",
+      o.fit_min, o.fit_max, fit.samples_used, 1e3 * fit.residual_rms, 1e3 * fitted_offset,
+      1e3 * fit.line.slope);
+  fmt::print("raised by {:.0f} mm: d_bar <= {:.2f} mm + {:.3f} mm/m * distance ({} of {} samples under it)\n",
+             o.raise_mm, 1e3 * fit.line.offset, 1e3 * fit.line.slope, under, samples.size());
+  fmt::print(
+      "config (deploy/config/reflector_extractor.json): \"paper\": {{\"roundness_offset_m\": {:.4f}, "
+      "\"roundness_slope\": {:.5f}}}\n",
+      fit.line.offset, fit.line.slope);
   return 0;
 }
 
@@ -154,13 +164,27 @@ int main(int argc, char** argv) {
   app.add_option("--renderer", o.renderer, "simulation: emulator (LMS100 model) or synthetic")
       ->check(CLI::IsMember({"emulator", "synthetic"}))
       ->capture_default_str();
-  app.add_option("--drop-points", o.drop_points, "first and last n points left out of d-bar")->check(CLI::Range(0, 20))->capture_default_str();
-  app.add_option("--scans", o.scans, "scans per placement")->check(CLI::Range(1, 1000))->capture_default_str();
-  app.add_option("--raise-mm", o.raise_mm, "how far the fitted line is raised [mm]")->check(CLI::Range(0.0, 1000.0))->capture_default_str();
-  app.add_option("--fit-min-m", o.fit_min, "fit only distances from [m]")->check(CLI::Range(0.0, 100.0))->capture_default_str();
-  app.add_option("--fit-max-m", o.fit_max, "fit only distances up to [m]")->check(CLI::Range(0.0, 100.0))->capture_default_str();
-  app.add_option("--distance-max-m", o.distance_max, "farthest placement [m]")->check(CLI::Range(0.25, 20.0))->capture_default_str();
-  app.add_option("--range-sigma-m", o.range_sigma, "range noise of the synthetic renderer [m]")->check(CLI::Range(0.0, 0.2))->capture_default_str();
+  app.add_option("--drop-points", o.drop_points, "first and last n points left out of d-bar")
+      ->check(CLI::Range(0, 20))
+      ->capture_default_str();
+  app.add_option("--scans", o.scans, "scans per placement")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  app.add_option("--raise-mm", o.raise_mm, "how far the fitted line is raised [mm]")
+      ->check(CLI::Range(0.0, 1000.0))
+      ->capture_default_str();
+  app.add_option("--fit-min-m", o.fit_min, "fit only distances from [m]")
+      ->check(CLI::Range(0.0, 100.0))
+      ->capture_default_str();
+  app.add_option("--fit-max-m", o.fit_max, "fit only distances up to [m]")
+      ->check(CLI::Range(0.0, 100.0))
+      ->capture_default_str();
+  app.add_option("--distance-max-m", o.distance_max, "farthest placement [m]")
+      ->check(CLI::Range(0.25, 20.0))
+      ->capture_default_str();
+  app.add_option("--range-sigma-m", o.range_sigma, "range noise of the synthetic renderer [m]")
+      ->check(CLI::Range(0.0, 0.2))
+      ->capture_default_str();
   app.add_option("--seed", o.seed, "random seed")->capture_default_str();
   app.add_option("--csv", o.csv_path, "also write the samples to this CSV file");
   CLI11_PARSE(app, argc, argv);

@@ -14,8 +14,10 @@ std::vector<RoundnessSample> simulate_roundness_samples(const PlacementGrid& gri
   ReflectorExtractor extractor(config);
   std::vector<RoundnessSample> samples;
   LaserScan scan;
-  const int distances = static_cast<int>(std::floor((grid.distance_max - grid.distance_min) / grid.distance_step + 1e-9)) + 1;
-  const int angles = static_cast<int>(std::floor((grid.angle_max - grid.angle_min) / grid.angle_step + 1e-9)) + 1;
+  const int distances =
+      static_cast<int>(std::floor((grid.distance_max - grid.distance_min) / grid.distance_step + 1e-9)) + 1;
+  const int angles =
+      static_cast<int>(std::floor((grid.angle_max - grid.angle_min) / grid.angle_step + 1e-9)) + 1;
   for (int i = 0; i < distances; ++i) {
     const double distance = grid.distance_min + i * grid.distance_step;
     for (int j = 0; j < angles; ++j) {
@@ -42,8 +44,8 @@ std::vector<RoundnessSample> simulate_roundness_samples(const PlacementGrid& gri
   return samples;
 }
 
-RoundnessLineFit fit_roundness_line(const std::vector<RoundnessSample>& samples, double fit_min, double fit_max,
-                                    double raise) {
+RoundnessLineFit fit_roundness_line(const std::vector<RoundnessSample>& samples, double fit_min,
+                                    double fit_max, double raise) {
   RoundnessLineFit out;
   double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
   for (const RoundnessSample& s : samples) {

@@ -27,9 +27,9 @@ struct RoundnessLineFit {
 };
 
 struct PlacementGrid {
-  double distance_min = 0.25;  ///< [m]
-  double distance_max = 3.0;   ///< [m]
-  double distance_step = 0.25; ///< [m] (paper: 250 mm)
+  double distance_min = 0.25;                                  ///< [m]
+  double distance_max = 3.0;                                   ///< [m]
+  double distance_step = 0.25;                                 ///< [m] (paper: 250 mm)
   double angle_min = -110.0 * 3.14159265358979323846 / 180.0;  ///< [rad]
   double angle_max = 110.0 * 3.14159265358979323846 / 180.0;   ///< [rad]
   double angle_step = 10.0 * 3.14159265358979323846 / 180.0;   ///< [rad]; 12 x 23 = 276 sets
@@ -46,7 +46,7 @@ std::vector<RoundnessSample> simulate_roundness_samples(const PlacementGrid& gri
 
 /// Least-squares line through the samples with distance in [fit_min, fit_max], raised by
 /// raise [m]. samples_used = 0 when fewer than 2 samples (or all at one distance) qualify.
-RoundnessLineFit fit_roundness_line(const std::vector<RoundnessSample>& samples, double fit_min, double fit_max,
-                                    double raise);
+RoundnessLineFit fit_roundness_line(const std::vector<RoundnessSample>& samples, double fit_min,
+                                    double fit_max, double raise);
 
 }  // namespace refloc

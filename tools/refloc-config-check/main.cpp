@@ -6,8 +6,8 @@
 #include "common/json_config.hpp"
 #include "common/reflector_map.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 int main(int argc, char** argv) {
   CLI::App app{"Validate refloc map files; exit 2 naming file and key on the first error"};

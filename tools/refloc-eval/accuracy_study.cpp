@@ -19,8 +19,10 @@ namespace {
 constexpr double kCrlbMinCoverage = 0.5;
 
 /// Detection statistics of one scan against what the renderer really hit.
-void score_detections(const sim::World& world, const Pose2& map_T_laser, const std::vector<sim::BeamTruth>& truth,
-                      const std::vector<ReflectorDetection>& detections, double match_distance, Measurement& m) {
+void score_detections(const sim::World& world, const Pose2& map_T_laser,
+                      const std::vector<sim::BeamTruth>& truth,
+                      const std::vector<ReflectorDetection>& detections, double match_distance,
+                      Measurement& m) {
   std::map<int, int> beams_on_reflector;
   for (const auto& t : truth) {
     if (t.kind == sim::HitKind::kReflector && t.coverage >= 0.5) ++beams_on_reflector[t.id];
@@ -55,7 +57,8 @@ ModeSummary summarize(const std::vector<Measurement>& all, PipelineMode mode, si
   std::vector<double> max_dx(pose_count, 0.0), max_dy(pose_count, 0.0);
   std::vector<bool> pose_has_ok(pose_count, false);
   double sum_e2 = 0.0, sum_h2 = 0.0, sum_crlb = 0.0, sum_point_crlb = 0.0;
-  int n_ok = 0, n_crlb = 0, n_point_crlb = 0, visible = 0, detected_visible = 0, detections = 0, false_detections = 0;
+  int n_ok = 0, n_crlb = 0, n_point_crlb = 0, visible = 0, detected_visible = 0, detections = 0,
+      false_detections = 0;
   for (const auto& m : all) {
     if (m.mode != mode) continue;
     ++s.measurements;
@@ -121,14 +124,16 @@ std::vector<Pose2> paper_table_poses() {
   return poses;
 }
 
-std::vector<Pose2> random_drivable_poses(const sim::World& world, int n, double clearance, std::mt19937_64& rng) {
+std::vector<Pose2> random_drivable_poses(const sim::World& world, int n, double clearance,
+                                         std::mt19937_64& rng) {
   std::vector<Pose2> poses;
   if (world.drivable_areas.empty()) return poses;
   std::uniform_int_distribution<size_t> area(0, world.drivable_areas.size() - 1);
   std::uniform_real_distribution<double> unit(0.0, 1.0), heading(-M_PI, M_PI);
   for (int attempts = 0; static_cast<int>(poses.size()) < n && attempts < 1000 * n; ++attempts) {
     const auto& a = world.drivable_areas[area(rng)];
-    const Eigen::Vector2d p(a.x_min + unit(rng) * (a.x_max - a.x_min), a.y_min + unit(rng) * (a.y_max - a.y_min));
+    const Eigen::Vector2d p(a.x_min + unit(rng) * (a.x_max - a.x_min),
+                            a.y_min + unit(rng) * (a.y_max - a.y_min));
     if (sim::clearance(world, p) < clearance) continue;
     poses.push_back({p.x(), p.y(), heading(rng)});
   }
@@ -137,7 +142,8 @@ std::vector<Pose2> random_drivable_poses(const sim::World& world, int n, double 
 
 StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Pose2& robot_T_laser,
                       const PipelineConfigs& paper_configs, const PipelineConfigs& default_configs,
-                      const std::vector<Pose2>& poses, const StudyConfig& config, const ProgressCallback& progress) {
+                      const std::vector<Pose2>& poses, const StudyConfig& config,
+                      const ProgressCallback& progress) {
   sim::ScanRenderConfig render_config;
   render_config.sensor.range_sigma = config.range_sigma;
   render_config.sensor.range_offset = config.range_offset;
@@ -162,12 +168,13 @@ StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Po
       crlb_beams.clear();
       for (size_t b = 0; b < renderer.truth().size(); ++b) {
         const auto& t = renderer.truth()[b];
-        const int index = t.kind == sim::HitKind::kReflector && t.coverage >= kCrlbMinCoverage ? map.index_of(t.id) : -1;
+        const int index =
+            t.kind == sim::HitKind::kReflector && t.coverage >= kCrlbMinCoverage ? map.index_of(t.id) : -1;
         if (index >= 0) crlb_beams.push_back({scan.beam_angle(b), index});
       }
       const auto crlb = beam_range_crlb(map, poses[p], robot_T_laser, crlb_beams, config.range_sigma, spot);
-      const auto point_crlb =
-          beam_range_crlb(map, poses[p], robot_T_laser, crlb_beams, config.range_sigma, BeamSpotModel::point_beam());
+      const auto point_crlb = beam_range_crlb(map, poses[p], robot_T_laser, crlb_beams, config.range_sigma,
+                                              BeamSpotModel::point_beam());
       for (LocalizationPipeline* pipeline : {&paper, &best}) {
         const PipelineOutput& out = pipeline->run(scan);
         Measurement m;
@@ -188,8 +195,10 @@ StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Po
           m.has_point_beam_crlb = true;
           m.point_beam_crlb_var_xy = (*point_crlb)(0, 0) + (*point_crlb)(1, 1);
         }
-        m.wrong = m.published_ok && !approx_equal(m.estimate, m.truth, config.wrong_distance, config.wrong_angle);
-        score_detections(world, map_T_laser, renderer.truth(), *out.detections, config.detection_match_distance, m);
+        m.wrong =
+            m.published_ok && !approx_equal(m.estimate, m.truth, config.wrong_distance, config.wrong_angle);
+        score_detections(world, map_T_laser, renderer.truth(), *out.detections,
+                         config.detection_match_distance, m);
         result.measurements.push_back(m);
       }
       ++done;
@@ -221,17 +230,20 @@ nlohmann::json to_json(const ModeSummary& s) {
 
 std::string measurements_csv(const std::vector<Measurement>& measurements) {
   std::string csv =
-      "mode,pose_index,repeat,true_x_m,true_y_m,true_theta_rad,published_ok,match_status,solve_status,wrong,est_x_m,est_y_m,est_theta_rad,"
+      "mode,pose_index,repeat,true_x_m,true_y_m,true_theta_rad,published_ok,match_status,solve_status,wrong,"
+      "est_x_m,est_y_m,est_theta_rad,"
       "err_x_mm,err_y_mm,reflectors_used,crlb_rmse_mm,visible_reflectors,detected_visible,detections,"
       "false_detections\n";
   for (const auto& m : measurements) {
-    csv += fmt::format("{},{},{},{:.4f},{:.4f},{:.5f},{},{},{},{},{:.5f},{:.5f},{:.6f},{:.2f},{:.2f},{},{:.3f},{},{},{},{}\n",
-                       to_string(m.mode), m.pose_index, m.repeat, m.truth.x, m.truth.y, m.truth.theta,
-                       m.published_ok ? 1 : 0, static_cast<int>(m.match_status), static_cast<int>(m.solve_status),
-                       m.wrong ? 1 : 0, m.estimate.x, m.estimate.y, m.estimate.theta,
-                       1000.0 * (m.estimate.x - m.truth.x), 1000.0 * (m.estimate.y - m.truth.y), m.reflectors_used,
-                       m.has_crlb ? 1000.0 * std::sqrt(m.crlb_var_xy) : 0.0, m.visible_reflectors,
-                       m.detected_visible, m.detections, m.false_detections);
+    csv += fmt::format(
+        "{},{},{},{:.4f},{:.4f},{:.5f},{},{},{},{},{:.5f},{:.5f},{:.6f},{:.2f},{:.2f},{},{:.3f},{},{},{},{}"
+        "\n",
+        to_string(m.mode), m.pose_index, m.repeat, m.truth.x, m.truth.y, m.truth.theta,
+        m.published_ok ? 1 : 0, static_cast<int>(m.match_status), static_cast<int>(m.solve_status),
+        m.wrong ? 1 : 0, m.estimate.x, m.estimate.y, m.estimate.theta, 1000.0 * (m.estimate.x - m.truth.x),
+        1000.0 * (m.estimate.y - m.truth.y), m.reflectors_used,
+        m.has_crlb ? 1000.0 * std::sqrt(m.crlb_var_xy) : 0.0, m.visible_reflectors, m.detected_visible,
+        m.detections, m.false_detections);
   }
   return csv;
 }

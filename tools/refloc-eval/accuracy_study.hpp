@@ -18,9 +18,9 @@
 namespace refloc {
 
 struct StudyConfig {
-  double range_sigma = 0.012;   ///< LMS100 statistical range error, 1 sigma [m]
-  double range_offset = 0.0;    ///< systematic range error [m]
-  int repeats = 1;              ///< scans per pose
+  double range_sigma = 0.012;  ///< LMS100 statistical range error, 1 sigma [m]
+  double range_offset = 0.0;   ///< systematic range error [m]
+  int repeats = 1;             ///< scans per pose
   uint64_t seed = 1;
   double wrong_distance = 0.2;  ///< a published pose farther than this from the truth is wrong [m]
   double wrong_angle = 5.0 * M_PI / 180.0;  ///< ... or turned more than this [rad]
@@ -45,7 +45,7 @@ struct Measurement {
   int detected_visible = 0;
   int detections = 0;
   int false_detections = 0;
-  bool wrong = false;        ///< published as OK but off by more than the wrong-pose limits
+  bool wrong = false;  ///< published as OK but off by more than the wrong-pose limits
 };
 
 struct ModeSummary {
@@ -55,15 +55,15 @@ struct ModeSummary {
   int wrong_matches = 0;
   double mean_max_err_x_mm = 0.0;  ///< mean over poses of the max |dx| over its repeats
   double mean_max_err_y_mm = 0.0;
-  double rmse_mm = 0.0;            ///< sqrt(mean(dx^2 + dy^2)) over published, not wrong, measurements
+  double rmse_mm = 0.0;  ///< sqrt(mean(dx^2 + dy^2)) over published, not wrong, measurements
   double max_err_mm = 0.0;
   double heading_rmse_deg = 0.0;
-  double crlb_rmse_mm = 0.0;       ///< sqrt(mean(trace of the bound's position block))
-  double crlb_ratio = 0.0;         ///< rmse / crlb_rmse
+  double crlb_rmse_mm = 0.0;             ///< sqrt(mean(trace of the bound's position block))
+  double crlb_ratio = 0.0;               ///< rmse / crlb_rmse
   double point_beam_crlb_rmse_mm = 0.0;  ///< the bound if the beams were ideal points
   double point_beam_crlb_ratio = 0.0;    ///< rmse / point_beam_crlb_rmse
-  double recall = 0.0;             ///< visible reflectors detected / visible reflectors
-  double false_detection_rate = 0.0;  ///< detections not on a real reflector / detections
+  double recall = 0.0;                   ///< visible reflectors detected / visible reflectors
+  double false_detection_rate = 0.0;     ///< detections not on a real reflector / detections
 };
 
 struct StudyResult {
@@ -77,14 +77,16 @@ std::vector<Pose2> paper_table_poses();
 
 /// n poses uniform over the world's drivable areas with uniform heading, at least
 /// clearance [m] from any wall, obstacle or reflector.
-std::vector<Pose2> random_drivable_poses(const sim::World& world, int n, double clearance, std::mt19937_64& rng);
+std::vector<Pose2> random_drivable_poses(const sim::World& world, int n, double clearance,
+                                         std::mt19937_64& rng);
 
 using ProgressCallback = std::function<void(size_t done, size_t total)>;
 
 /// Render every pose config.repeats times and localize each scan in both modes.
 StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Pose2& robot_T_laser,
                       const PipelineConfigs& paper_configs, const PipelineConfigs& default_configs,
-                      const std::vector<Pose2>& poses, const StudyConfig& config, const ProgressCallback& progress);
+                      const std::vector<Pose2>& poses, const StudyConfig& config,
+                      const ProgressCallback& progress);
 
 nlohmann::json to_json(const ModeSummary& summary);
 /// One CSV row per measurement, with a header.

@@ -5,8 +5,9 @@
 
 namespace refloc {
 
-double expected_reflector_range(const Pose2& map_T_laser, double beam_angle, const Eigen::Vector2d& map_p_center,
-                                double radius, const BeamSpotModel& spot) {
+double expected_reflector_range(const Pose2& map_T_laser, double beam_angle,
+                                const Eigen::Vector2d& map_p_center, double radius,
+                                const BeamSpotModel& spot) {
   const double a = map_T_laser.theta + beam_angle;
   const Eigen::Vector2d axis(std::cos(a), std::sin(a));
   const Eigen::Vector2d lateral(-axis.y(), axis.x());
@@ -36,15 +37,16 @@ double expected_reflector_range(const Pose2& map_T_laser, double beam_angle, con
 }
 
 std::optional<Eigen::Matrix3d> beam_range_crlb(const ReflectorMap& map, const Pose2& map_T_robot,
-                                               const Pose2& robot_T_laser, const std::vector<ReflectorBeam>& beams,
-                                               double range_sigma, const BeamSpotModel& spot) {
+                                               const Pose2& robot_T_laser,
+                                               const std::vector<ReflectorBeam>& beams, double range_sigma,
+                                               const BeamSpotModel& spot) {
   Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
   int informative = 0;
   // The point model is smooth where the axis meets the circle: tiny central differences.
   // The sampled spot jumps by a ray's share when a ray crosses the silhouette; steps wider
   // than the ray spacing (0.3 mm at 4 m with 201 rays) see the smooth mean instead.
   const bool point = spot.samples <= 1;
-  const double h_xy = point ? 1e-6 : 1e-3;    // [m]
+  const double h_xy = point ? 1e-6 : 1e-3;     // [m]
   const double h_theta = point ? 1e-6 : 2e-4;  // [rad], 0.8 mm at 4 m
   for (const auto& b : beams) {
     const MapReflector& r = map.reflectors[static_cast<size_t>(b.reflector_index)];
@@ -55,8 +57,10 @@ std::optional<Eigen::Matrix3d> beam_range_crlb(const ReflectorMap& map, const Po
       Pose2 plus = map_T_robot, minus = map_T_robot;
       (k == 0 ? plus.x : k == 1 ? plus.y : plus.theta) += h;
       (k == 0 ? minus.x : k == 1 ? minus.y : minus.theta) -= h;
-      const double rp = expected_reflector_range(plus * robot_T_laser, b.beam_angle, r.map_p_center, r.radius, spot);
-      const double rm = expected_reflector_range(minus * robot_T_laser, b.beam_angle, r.map_p_center, r.radius, spot);
+      const double rp =
+          expected_reflector_range(plus * robot_T_laser, b.beam_angle, r.map_p_center, r.radius, spot);
+      const double rm =
+          expected_reflector_range(minus * robot_T_laser, b.beam_angle, r.map_p_center, r.radius, spot);
       ok = std::isfinite(rp) && std::isfinite(rm);
       gradient[k] = (rp - rm) / (2.0 * h);
     }

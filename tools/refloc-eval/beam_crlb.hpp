@@ -33,9 +33,9 @@ struct ReflectorBeam {
 /// The beam as the bound models it. Defaults: the LMS100 (SICK operating instructions §3.6.2)
 /// and the emulator's retro-reflector return, energy proportional to cos(incidence)^0.3.
 struct BeamSpotModel {
-  double exit_diameter = 0.008;            ///< spot diameter at the optics cover [m]
-  double divergence = 0.015;               ///< full angle of the 1/e^2 spot [rad]
-  double retro_incidence_exponent = 0.3;   ///< return energy ~ cos(incidence)^this [-]
+  double exit_diameter = 0.008;           ///< spot diameter at the optics cover [m]
+  double divergence = 0.015;              ///< full angle of the 1/e^2 spot [rad]
+  double retro_incidence_exponent = 0.3;  ///< return energy ~ cos(incidence)^this [-]
   /// Rays sampling the spot across its width [-]; 1 = an ideal point beam on the axis.
   int samples = 201;
 
@@ -49,13 +49,15 @@ struct BeamSpotModel {
 
 /// Noise-free range a beam at beam_angle in map_T_laser reports on a circle [m]; NaN when no
 /// part of the spot meets it.
-double expected_reflector_range(const Pose2& map_T_laser, double beam_angle, const Eigen::Vector2d& map_p_center,
-                                double radius, const BeamSpotModel& spot);
+double expected_reflector_range(const Pose2& map_T_laser, double beam_angle,
+                                const Eigen::Vector2d& map_p_center, double radius,
+                                const BeamSpotModel& spot);
 
 /// Covariance bound of (x, y, theta) of map_T_robot [m^2, m rad, rad^2]; empty with fewer than
 /// 3 informative beams or a singular geometry.
 std::optional<Eigen::Matrix3d> beam_range_crlb(const ReflectorMap& map, const Pose2& map_T_robot,
-                                               const Pose2& robot_T_laser, const std::vector<ReflectorBeam>& beams,
-                                               double range_sigma, const BeamSpotModel& spot);
+                                               const Pose2& robot_T_laser,
+                                               const std::vector<ReflectorBeam>& beams, double range_sigma,
+                                               const BeamSpotModel& spot);
 
 }  // namespace refloc

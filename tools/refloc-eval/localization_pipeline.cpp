@@ -40,8 +40,8 @@ PipelineConfigs load_pipeline_configs(PipelineMode mode, const std::string& extr
   return configs;
 }
 
-LocalizationPipeline::LocalizationPipeline(PipelineMode mode, const PipelineConfigs& configs, const ReflectorMap& map,
-                                           const Pose2& robot_T_laser)
+LocalizationPipeline::LocalizationPipeline(PipelineMode mode, const PipelineConfigs& configs,
+                                           const ReflectorMap& map, const Pose2& robot_T_laser)
     : mode_(mode),
       robot_T_laser_(robot_T_laser),
       extractor_(configs.extractor),

@@ -19,12 +19,14 @@ void add_to_continuity(ScanContinuity& continuity, const LogEventView& e,
     if (scan.decode(e.data, 0, static_cast<int>(e.size)) >= 0)
       continuity.add_scan(scan.scan_counter, scan.utime, e.log_utime);
   } else if (const int stage = continuity.stage_of(*e.channel); stage >= 0) {
-    if (const auto scan_utime = decoder.utime(e.data, e.size)) continuity.add_stage(static_cast<size_t>(stage), *scan_utime);
+    if (const auto scan_utime = decoder.utime(e.data, e.size))
+      continuity.add_stage(static_cast<size_t>(stage), *scan_utime);
   } else if (heartbeat) {
     const auto& f = heartbeat->fields;
-    continuity.add_heartbeat(f.at("service").get<std::string>(), f.at("pid").get<int32_t>(), f.at("messages_in").get<int64_t>(),
-                             f.at("messages_out").get<int64_t>(), f.at("decode_errors").get<int64_t>(),
-                             f.at("processing_p50_us").get<double>(), f.at("processing_p99_us").get<double>(),
+    continuity.add_heartbeat(f.at("service").get<std::string>(), f.at("pid").get<int32_t>(),
+                             f.at("messages_in").get<int64_t>(), f.at("messages_out").get<int64_t>(),
+                             f.at("decode_errors").get<int64_t>(), f.at("processing_p50_us").get<double>(),
+                             f.at("processing_p99_us").get<double>(),
                              f.at("counter_names").get<std::vector<std::string>>(),
                              f.at("counter_values").get<std::vector<int64_t>>());
   }

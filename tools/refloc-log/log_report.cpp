@@ -143,29 +143,31 @@ nlohmann::ordered_json latency_report_to_json(const LatencyReport& report) {
 
 std::string format_scan_continuity(const ScanContinuityReport& r) {
   std::string out = fmt::format("scan continuity on {}\n", r.scan_channel);
-  out += fmt::format("  scans {} over {:.3f} s ({:.2f} Hz), counters {}..{}: expected {}, missing {} in {} gaps, "
-                     "duplicates {}, out of order {}\n",
-                     r.scans, r.duration_s, r.rate_hz, r.first_counter, r.last_counter, r.expected, r.missing,
-                     r.gap_count, r.duplicates, r.out_of_order);
+  out += fmt::format(
+      "  scans {} over {:.3f} s ({:.2f} Hz), counters {}..{}: expected {}, missing {} in {} gaps, "
+      "duplicates {}, out of order {}\n",
+      r.scans, r.duration_s, r.rate_hz, r.first_counter, r.last_counter, r.expected, r.missing, r.gap_count,
+      r.duplicates, r.out_of_order);
   for (const auto& g : r.gaps) {
-    out += fmt::format("    gap after counter {}: {} scans missing (at {:.3f} s)\n", g.after_counter, g.missing, g.at_s);
+    out += fmt::format("    gap after counter {}: {} scans missing (at {:.3f} s)\n", g.after_counter,
+                       g.missing, g.at_s);
   }
   if (r.gap_count > static_cast<int64_t>(r.gaps.size()))
     out += fmt::format("    ... and {} more gaps\n", r.gap_count - static_cast<int64_t>(r.gaps.size()));
   for (const auto& s : r.stages) {
-    out += fmt::format("  {:<20} messages {:>8}  scans reached {:>8}  scans missing {:>6}\n", s.channel, s.messages,
-                       s.scans_reached, s.scans_missing);
+    out += fmt::format("  {:<20} messages {:>8}  scans reached {:>8}  scans missing {:>6}\n", s.channel,
+                       s.messages, s.scans_reached, s.scans_missing);
   }
-  out += fmt::format("  not logged but processed downstream: {}\n  dropped scans: {}\n", r.unlogged_but_processed,
-                     r.dropped());
+  out += fmt::format("  not logged but processed downstream: {}\n  dropped scans: {}\n",
+                     r.unlogged_but_processed, r.dropped());
   if (!r.services.empty()) {
     out += "service health from HEARTBEAT\n";
-    out += fmt::format("  {:<22} {:>6} {:>10} {:>10} {:>8} {:>9} {:>9} {:>8}\n", "SERVICE", "BEATS", "IN(LOG)",
-                       "OUT(LOG)", "DECERR", "P99[us]", "MAXP99", "RESTART");
+    out += fmt::format("  {:<22} {:>6} {:>10} {:>10} {:>8} {:>9} {:>9} {:>8}\n", "SERVICE", "BEATS",
+                       "IN(LOG)", "OUT(LOG)", "DECERR", "P99[us]", "MAXP99", "RESTART");
     for (const auto& h : r.services) {
-      out += fmt::format("  {:<22} {:>6} {:>10} {:>10} {:>8} {:>9.0f} {:>9.0f} {:>8}\n", h.service, h.heartbeats,
-                         h.messages_in_logged, h.messages_out_logged, h.decode_errors, h.last_p99_us, h.max_p99_us,
-                         h.restarts);
+      out += fmt::format("  {:<22} {:>6} {:>10} {:>10} {:>8} {:>9.0f} {:>9.0f} {:>8}\n", h.service,
+                         h.heartbeats, h.messages_in_logged, h.messages_out_logged, h.decode_errors,
+                         h.last_p99_us, h.max_p99_us, h.restarts);
     }
   }
   return out;
@@ -173,7 +175,8 @@ std::string format_scan_continuity(const ScanContinuityReport& r) {
 
 nlohmann::ordered_json scan_continuity_to_json(const ScanContinuityReport& r) {
   nlohmann::ordered_json gaps = nlohmann::ordered_json::array();
-  for (const auto& g : r.gaps) gaps.push_back({{"after_counter", g.after_counter}, {"missing", g.missing}, {"at_s", g.at_s}});
+  for (const auto& g : r.gaps)
+    gaps.push_back({{"after_counter", g.after_counter}, {"missing", g.missing}, {"at_s", g.at_s}});
   nlohmann::ordered_json stages = nlohmann::ordered_json::array();
   for (const auto& s : r.stages) {
     stages.push_back({{"channel", s.channel},
@@ -196,22 +199,14 @@ nlohmann::ordered_json scan_continuity_to_json(const ScanContinuityReport& r) {
                         {"max_processing_p99_us", h.max_p99_us},
                         {"counters", h.counters}});
   }
-  return {{"channel", r.scan_channel},
-          {"scans", r.scans},
-          {"duration_s", r.duration_s},
-          {"rate_hz", r.rate_hz},
-          {"first_counter", r.first_counter},
-          {"last_counter", r.last_counter},
-          {"expected", r.expected},
-          {"missing", r.missing},
-          {"gap_count", r.gap_count},
-          {"duplicates", r.duplicates},
-          {"out_of_order", r.out_of_order},
-          {"unlogged_but_processed", r.unlogged_but_processed},
-          {"dropped", r.dropped()},
-          {"gaps", std::move(gaps)},
-          {"stages", std::move(stages)},
-          {"services", std::move(services)}};
+  return {{"channel", r.scan_channel},        {"scans", r.scans},
+          {"duration_s", r.duration_s},       {"rate_hz", r.rate_hz},
+          {"first_counter", r.first_counter}, {"last_counter", r.last_counter},
+          {"expected", r.expected},           {"missing", r.missing},
+          {"gap_count", r.gap_count},         {"duplicates", r.duplicates},
+          {"out_of_order", r.out_of_order},   {"unlogged_but_processed", r.unlogged_but_processed},
+          {"dropped", r.dropped()},           {"gaps", std::move(gaps)},
+          {"stages", std::move(stages)},      {"services", std::move(services)}};
 }
 
 }  // namespace refloc

@@ -34,9 +34,10 @@ int main(int argc, char** argv) {
   app.add_option("--pipeline", options.pipeline_channels, "pipeline channels for --latency, comma separated")
       ->delimiter(',')
       ->capture_default_str();
-  app.add_flag("--scans", options.scans,
-               "dropped scans: LMS100_SCAN counter gaps, scans reaching REFLECTORS/REFLECTOR_MATCHES/LASER_POSE, "
-               "and every service's HEARTBEAT health (decode errors, worst handler p99, restarts)");
+  app.add_flag(
+      "--scans", options.scans,
+      "dropped scans: LMS100_SCAN counter gaps, scans reaching REFLECTORS/REFLECTOR_MATCHES/LASER_POSE, "
+      "and every service's HEARTBEAT health (decode errors, worst handler p99, restarts)");
   app.add_flag("--json", json, "print the summary (and latency) as one JSON document");
   CLI11_PARSE(app, argc, argv);
 

@@ -42,7 +42,8 @@ void ScanContinuity::add_scan(int32_t scan_counter, int64_t scan_utime, int64_t 
     if (delta > 1) {
       ++r_.gap_count;
       if (r_.gaps.size() < max_gaps_) {
-        r_.gaps.push_back({last_counter_, delta - 1, static_cast<double>(log_utime - first_log_utime_) * 1e-6});
+        r_.gaps.push_back(
+            {last_counter_, delta - 1, static_cast<double>(log_utime - first_log_utime_) * 1e-6});
       }
     }
   }
@@ -57,7 +58,9 @@ void ScanContinuity::add_stage(size_t stage, int64_t scan_utime) {
   stage_scans_[stage].insert(scan_utime);
 }
 
-void ScanContinuity::add_event(int64_t log_utime) { last_event_log_utime_ = std::max(last_event_log_utime_, log_utime); }
+void ScanContinuity::add_event(int64_t log_utime) {
+  last_event_log_utime_ = std::max(last_event_log_utime_, log_utime);
+}
 
 void ScanContinuity::add_heartbeat(const std::string& service, int32_t pid, int64_t messages_in,
                                    int64_t messages_out, int64_t decode_errors, double p50_us, double p99_us,

@@ -35,8 +35,8 @@ struct StageCoverage {
 struct ServiceHealth {
   std::string service;
   int64_t heartbeats = 0;
-  int64_t restarts = 0;  ///< pid changes
-  int64_t messages_in = 0;   ///< last heartbeat (since the process started)
+  int64_t restarts = 0;     ///< pid changes
+  int64_t messages_in = 0;  ///< last heartbeat (since the process started)
   int64_t messages_out = 0;
   /// Between its first and last heartbeat in the log (summed over restarts): set
   /// against the logged message counts, tells a service's drop from the logger's.
@@ -45,21 +45,21 @@ struct ServiceHealth {
   int64_t decode_errors = 0;  ///< summed over restarts
   double last_p50_us = 0.0;
   double last_p99_us = 0.0;
-  double max_p99_us = 0.0;  ///< worst handler p99 of any heartbeat window [us]
+  double max_p99_us = 0.0;                  ///< worst handler p99 of any heartbeat window [us]
   std::map<std::string, int64_t> counters;  ///< service-specific counters, last heartbeat
 };
 
 struct ScanContinuityReport {
   std::string scan_channel;
-  int64_t scans = 0;             ///< messages on the scan channel
-  int64_t first_counter = 0;     ///< unwrapped
-  int64_t last_counter = 0;      ///< unwrapped
-  int64_t expected = 0;          ///< last_counter - first_counter + 1
-  int64_t missing = 0;           ///< counters never seen between first and last
-  int64_t duplicates = 0;        ///< scans whose counter was seen before
-  int64_t out_of_order = 0;      ///< a counter behind the previous one (reordering or a sensor restart)
-  double duration_s = 0.0;       ///< first to last scan, log time [s]
-  double rate_hz = 0.0;          ///< (scans - 1) / duration_s
+  int64_t scans = 0;                 ///< messages on the scan channel
+  int64_t first_counter = 0;         ///< unwrapped
+  int64_t last_counter = 0;          ///< unwrapped
+  int64_t expected = 0;              ///< last_counter - first_counter + 1
+  int64_t missing = 0;               ///< counters never seen between first and last
+  int64_t duplicates = 0;            ///< scans whose counter was seen before
+  int64_t out_of_order = 0;          ///< a counter behind the previous one (reordering or a sensor restart)
+  double duration_s = 0.0;           ///< first to last scan, log time [s]
+  double rate_hz = 0.0;              ///< (scans - 1) / duration_s
   std::vector<ScanCounterGap> gaps;  ///< at most max_gaps, in log order
   int64_t gap_count = 0;             ///< all of them
   /// Scans the log lacks on the scan channel but a later stage has (by utime):
@@ -92,7 +92,8 @@ class ScanContinuity {
   /// One HEARTBEAT.
   void add_heartbeat(const std::string& service, int32_t pid, int64_t messages_in, int64_t messages_out,
                      int64_t decode_errors, double p50_us, double p99_us,
-                     const std::vector<std::string>& counter_names, const std::vector<int64_t>& counter_values);
+                     const std::vector<std::string>& counter_names,
+                     const std::vector<int64_t>& counter_values);
 
   ScanContinuityReport report() const;
 
@@ -101,7 +102,7 @@ class ScanContinuity {
     ServiceHealth health;
     int32_t pid = 0;
     int64_t decode_errors_before_restart = 0;
-    int64_t in_base = 0;   ///< messages_in at the first heartbeat of this process
+    int64_t in_base = 0;  ///< messages_in at the first heartbeat of this process
     int64_t out_base = 0;
     int64_t in_banked = 0;  ///< counted by earlier processes of the service
     int64_t out_banked = 0;
@@ -118,9 +119,9 @@ class ScanContinuity {
   int64_t first_log_utime_ = 0;
   int64_t last_scan_log_utime_ = 0;
   int64_t last_event_log_utime_ = 0;
-  std::set<int64_t> counters_seen_;                      ///< unwrapped
-  std::map<int64_t, int64_t> scan_log_utime_;            ///< scan utime -> log utime
-  std::vector<std::set<int64_t>> stage_scans_;           ///< scan utimes seen per stage
+  std::set<int64_t> counters_seen_;             ///< unwrapped
+  std::map<int64_t, int64_t> scan_log_utime_;   ///< scan utime -> log utime
+  std::vector<std::set<int64_t>> stage_scans_;  ///< scan utimes seen per stage
   std::map<std::string, ServiceAccumulator> services_;
 };
 

@@ -11,8 +11,8 @@
 #include "path_plot_svg.hpp"
 #include "trajectory.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <refloc/nav_goal_t.hpp>
 #include <refloc/nav_status_t.hpp>
@@ -98,7 +98,8 @@ class MissionMonitor {
     fmt::print("waiting for POSE with status OK ...\n");
     while (!localized_ && !rt_.stop_requested()) {
       if (monotonic_us() - start > static_cast<int64_t>(mission_.localization_timeout_s * 1e6)) {
-        fmt::print(stderr, "refloc-mission: no POSE with status OK within {:.0f} s\n", mission_.localization_timeout_s);
+        fmt::print(stderr, "refloc-mission: no POSE with status OK within {:.0f} s\n",
+                   mission_.localization_timeout_s);
         return 1;
       }
       rt_.spin_once(50);
@@ -129,8 +130,11 @@ class MissionMonitor {
     nlohmann::json waypoints = nlohmann::json::array();
     for (size_t i = 0; i < results_.size(); ++i) {
       const auto& r = results_[i];
-      nlohmann::json w = {{"index", i}, {"x_m", r.target.x}, {"y_m", r.target.y},
-                          {"theta_deg", r.target.theta * 180.0 / M_PI}, {"reached", r.reached}};
+      nlohmann::json w = {{"index", i},
+                          {"x_m", r.target.x},
+                          {"y_m", r.target.y},
+                          {"theta_deg", r.target.theta * 180.0 / M_PI},
+                          {"reached", r.reached}};
       if (r.reached) {
         ++reached;
         max_xy = std::max(max_xy, r.error_xy_m);
@@ -210,7 +214,8 @@ class MissionMonitor {
   void on_status(const nav_status_t& m) {
     if (!driving_) return;
     const int64_t now = monotonic_us();
-    const size_t newly = progress_.on_status(m.goal_id, static_cast<NavStatusState>(m.state), m.waypoints_reached, now);
+    const size_t newly =
+        progress_.on_status(m.goal_id, static_cast<NavStatusState>(m.state), m.waypoints_reached, now);
     for (size_t i = progress_.reached() - newly; i < progress_.reached(); ++i) {
       auto& r = results_[i];
       r.reached = true;
@@ -276,7 +281,8 @@ int main(int argc, char** argv) {
     const nlohmann::json report = monitor.report(log_file);
     fmt::print("\nwaypoints reached: {}/{}\n", report["waypoints_reached"].get<size_t>(),
                report["waypoints_total"].get<size_t>());
-    fmt::print("max true waypoint error: {:.1f} mm, {:.2f} deg\n", report["max_waypoint_error_mm"].get<double>(),
+    fmt::print("max true waypoint error: {:.1f} mm, {:.2f} deg\n",
+               report["max_waypoint_error_mm"].get<double>(),
                report["max_waypoint_heading_error_deg"].get<double>());
     fmt::print("POSE RMSE vs GROUND_TRUTH: {:.1f} mm over {} samples\n", report["pose_rmse_mm"].get<double>(),
                report["pose_samples"].get<size_t>());

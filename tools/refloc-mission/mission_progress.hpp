@@ -18,7 +18,13 @@ struct MissionProgressConfig {
 };
 
 /// NAV_STATUS state values (nav_status_t::STATE_*), without the LCM type.
-enum class NavStatusState : int8_t { kIdle = 0, kDriving = 1, kArrived = 2, kStoppedNoPose = 3, kAborted = 4 };
+enum class NavStatusState : int8_t {
+  kIdle = 0,
+  kDriving = 1,
+  kArrived = 2,
+  kStoppedNoPose = 3,
+  kAborted = 4
+};
 
 class MissionProgress {
  public:

@@ -8,7 +8,8 @@
 
 namespace refloc {
 
-bool write_path_plot_svg(const std::string& path, const std::string& title, const std::vector<PlotSeries>& series) {
+bool write_path_plot_svg(const std::string& path, const std::string& title,
+                         const std::vector<PlotSeries>& series) {
   double min_x = std::numeric_limits<double>::max(), min_y = min_x;
   double max_x = -min_x, max_y = -min_x;
   for (const auto& s : series) {
@@ -48,8 +49,9 @@ bool write_path_plot_svg(const std::string& path, const std::string& title, cons
       for (const auto& p : s.points) out << px(p) << ' ';
       out << "\"/>\n";
     }
-    out << fmt::format("<text x=\"{:.0f}\" y=\"{:.0f}\" font-family=\"sans-serif\" font-size=\"13\" fill=\"{}\">{}</text>\n",
-                       legend_x, height_px + 36, s.color, s.label);
+    out << fmt::format(
+        "<text x=\"{:.0f}\" y=\"{:.0f}\" font-family=\"sans-serif\" font-size=\"13\" fill=\"{}\">{}</text>\n",
+        legend_x, height_px + 36, s.color, s.label);
     legend_x += 12.0 * static_cast<double>(s.label.size()) + 20.0;
   }
   out << "</svg>\n";

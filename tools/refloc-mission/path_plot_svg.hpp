@@ -17,6 +17,7 @@ struct PlotSeries {
 };
 
 /// Write the series into an SVG file; returns false when the file cannot be written.
-bool write_path_plot_svg(const std::string& path, const std::string& title, const std::vector<PlotSeries>& series);
+bool write_path_plot_svg(const std::string& path, const std::string& title,
+                         const std::vector<PlotSeries>& series);
 
 }  // namespace refloc

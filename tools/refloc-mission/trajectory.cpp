@@ -16,7 +16,8 @@ void Trajectory::add(int64_t utime, const Pose2& pose) {
 }
 
 std::optional<Pose2> Trajectory::at(int64_t utime, int64_t max_gap_us) const {
-  if (samples_.empty() || utime < samples_.front().utime || utime > samples_.back().utime) return std::nullopt;
+  if (samples_.empty() || utime < samples_.front().utime || utime > samples_.back().utime)
+    return std::nullopt;
   const auto hi = std::lower_bound(samples_.begin(), samples_.end(), utime,
                                    [](const StampedPose& s, int64_t t) { return s.utime < t; });
   if (hi->utime == utime) return hi->pose;

@@ -30,8 +30,8 @@ class Trajectory {
 
 struct ErrorStats {
   size_t count = 0;
-  double rmse_xy_m = 0.0;       ///< sqrt(mean(dx^2 + dy^2)) [m]
-  double max_xy_m = 0.0;        ///< [m]
+  double rmse_xy_m = 0.0;  ///< sqrt(mean(dx^2 + dy^2)) [m]
+  double max_xy_m = 0.0;   ///< [m]
   double rmse_heading_rad = 0.0;
 };
 

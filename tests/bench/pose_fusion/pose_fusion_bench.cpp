@@ -34,7 +34,7 @@ void BM_DelayedFix(benchmark::State& state) {
   int64_t t = kPeriod;
   for (int i = 0; i < 200; ++i) fusion.add_odometry(t += kPeriod, delta, q);
   for (auto _ : state) {
-    fusion.add_odometry(t += kPeriod, delta, q);  // keeps the history length steady
+    fusion.add_odometry(t += kPeriod, delta, q);    // keeps the history length steady
     const int64_t fix_time = t - delay_us + 5'000;  // mid-step: includes a split
     // A loose fix at the current estimate: always inside the gate, so every
     // iteration pays the full roll-back and re-application.

@@ -25,7 +25,8 @@ Scan make_scan(int n, const Pose2& mount) {
   }
   const ReflectorMap map = testing::map_from_points(points);
   std::mt19937 rng(7);
-  const auto synthetic = testing::render_detections(map, Pose2{20.0, 20.0, 0.1} * mount, testing::SyntheticSensor{}, rng);
+  const auto synthetic =
+      testing::render_detections(map, Pose2{20.0, 20.0, 0.1} * mount, testing::SyntheticSensor{}, rng);
   Scan s;
   s.detections = synthetic.detections;
   for (size_t d = 0; d < synthetic.detections.size(); ++d) {

@@ -78,7 +78,10 @@ void BM_TrackingPipelineMatchAndSolve(benchmark::State& state) {
     benchmark::DoNotOptimize(solution.map_T_robot.x);
   }
 }
-BENCHMARK(BM_TrackingPipelineMatchAndSolve)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(BM_TrackingPipelineMatchAndSolve)
+    ->Unit(benchmark::kMicrosecond)
+    ->Repetitions(5)
+    ->ReportAggregatesOnly(true);
 
 void BM_GlobalRelocalization(benchmark::State& state) {
   const Scenario s = make_scenario(static_cast<int>(state.range(0)), 3);
@@ -105,7 +108,8 @@ void BM_GlobalRelocalizationRepetitiveGrid(benchmark::State& state) {
   std::uniform_real_distribution<double> u(0.0, 310.0), ua(-M_PI, M_PI);
   std::vector<testing::SyntheticScan> scans;
   while (scans.size() < 16) {
-    auto scan = testing::render_detections(map, Pose2{u(rng), u(rng), ua(rng)}, testing::SyntheticSensor{}, rng);
+    auto scan =
+        testing::render_detections(map, Pose2{u(rng), u(rng), ua(rng)}, testing::SyntheticSensor{}, rng);
     if (scan.detections.size() >= 4) scans.push_back(std::move(scan));
   }
   ReflectorMatcher matcher(map, MatcherConfig{});
