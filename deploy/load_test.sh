@@ -75,7 +75,7 @@ export REFLOC_LOG_SPLIT_MB=100000  # one log file however long the run
 export LCM_DEFAULT_URL="${LCM_DEFAULT_URL:-udpm://239.255.76.67:7667?ttl=0}"
 export REFLOC_ARGS_lms100_driver="${REFLOC_ARGS_lms100_driver:---host 127.0.0.1}"
 
-services=(robot_sim lms100_driver reflector_extractor reflector_matcher pose_solver mecanum_odometry pose_fusion navigator)
+mapfile -t services < <(deploy/refloc list --services)  # deploy/services.list
 programs=("${services[@]}" lcm-logger)
 mission_loop_pid=""
 

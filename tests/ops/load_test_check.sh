@@ -28,7 +28,7 @@ jq -e '.scans.dropped == 0 and .scans.missing_counters == 0' "$json" >/dev/null 
 # 50 Hz over the run, give or take the logger's start and stop.
 jq -e --argjson d "$duration" '.scans.published >= 50 * $d * 0.95' "$json" >/dev/null ||
   fail "only $(jq .scans.published "$json") scans in ${duration} s"
-for s in robot_sim lms100_driver reflector_extractor reflector_matcher pose_solver mecanum_odometry pose_fusion navigator; do
+for s in $("$source_dir/deploy/refloc" list --services); do
   jq -e --arg s "$s" '[.services[] | select(.service == $s and .cpu_percent > 0 and .rss_peak_mb > 0
                         and .heartbeat_p99_us != null and .decode_errors == 0)] | length == 1' "$json" >/dev/null ||
     fail "service $s missing or incomplete in the report: $(jq -c --arg s "$s" '.services[] | select(.service == $s)' "$json")"

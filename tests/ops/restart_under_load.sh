@@ -29,8 +29,9 @@ export REFLOC_ARGS_lms100_driver="--host 127.0.0.1"
 unset REFLOC_PROGRAMS
 refloc="$repo/deploy/refloc"
 kills="$tmp/kills.txt"
-victims=(lms100_driver reflector_extractor reflector_matcher pose_solver mecanum_odometry pose_fusion navigator)
-programs=(lcm-logger robot_sim "${victims[@]}")
+# Every service of a real robot (deploy/services.list): not the simulated world.
+mapfile -t victims < <("$refloc" list --services --real)
+mapfile -t programs < <("$refloc" list)
 spacing_us=3500000   # kill to kill; each restart's recovery is seen before the next kill
 mission_pid=""
 passed=false

@@ -41,12 +41,14 @@ grep -q "restart NAME" <<<"$help" || fail "--help"
 [ -S "$REFLOC_RUN_DIR/supervisor.sock" ] || fail "no socket in $REFLOC_RUN_DIR"
 
 status="$("$refloc" status)" || true
-for program in lcm-logger robot_sim lms100_driver reflector_extractor reflector_matcher pose_solver \
-               mecanum_odometry pose_fusion navigator; do
+mapfile -t listed < <("$refloc" list)
+[ ${#listed[@]} -eq 9 ] || fail "deploy/services.list has ${#listed[@]} programs: ${listed[*]}"
+for program in "${listed[@]}"; do
   grep -q "^$program " <<<"$status" || fail "status does not list $program: $status"
 done
 grep -q "^navigator .*STOPPED" <<<"$status" || fail "navigator is not in REFLOC_PROGRAMS, yet: $status"
-echo "status lists all 9 programs"
+grep -qxF "[program:navigator]" "$REFLOC_RUN_DIR/programs.conf" || fail "no programs.conf written from the list"
+echo "status lists all ${#listed[@]} programs of deploy/services.list"
 
 wait_running lcm-logger
 wait_running robot_sim
