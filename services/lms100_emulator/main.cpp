@@ -25,7 +25,7 @@
 #include "lms100_emulator/lms100_emulator.hpp"
 #include "lms100_emulator/scan_render_source.hpp"
 #include "lms100_emulator/test_pattern_scan_source.hpp"
-#include "lms100_emulator/world_loader.hpp"
+#include "world_renderer/world_loader.hpp"
 
 namespace refloc {
 namespace {

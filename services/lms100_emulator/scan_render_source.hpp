@@ -3,9 +3,9 @@
 // the emulator requests is rendered beam by beam at the request's beam times and
 // angles, then coded as the sensor sends it (mm with codes 0/1, RSSI in 8 or 16 bit).
 
-#include "lms100_emulator/scan_renderer.hpp"
 #include "lms100_emulator/scan_source.hpp"
-#include "lms100_emulator/world.hpp"
+#include "world_renderer/scan_renderer.hpp"
+#include "world_renderer/world.hpp"
 
 #include <cstdint>
 #include <memory>

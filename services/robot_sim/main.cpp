@@ -16,7 +16,7 @@
 #include "lms100_emulator/emulator_config_loader.hpp"
 #include "lms100_emulator/lms100_emulator.hpp"
 #include "lms100_emulator/scan_render_source.hpp"
-#include "lms100_emulator/world_loader.hpp"
+#include "world_renderer/world_loader.hpp"
 
 #include <CLI/CLI.hpp>
 #include <refloc/pose2d_t.hpp>

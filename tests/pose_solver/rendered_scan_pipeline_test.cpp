@@ -3,11 +3,11 @@
 // demo hall -> ReflectorExtractor -> ReflectorMatcher without a prior ->
 // PoseSolver. No wrong OK, and the pose within a few centimetres.
 
-#include "lms100_emulator/scan_renderer.hpp"
-#include "lms100_emulator/world_loader.hpp"
 #include "pose_solver/pose_solver.hpp"
 #include "reflector_extractor/extractor.hpp"
 #include "reflector_matcher/reflector_matcher.hpp"
+#include "world_renderer/scan_renderer.hpp"
+#include "world_renderer/world_loader.hpp"
 
 #include "common/reflector_map.hpp"
 #include "common/robot_config.hpp"

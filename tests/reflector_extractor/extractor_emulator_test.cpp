@@ -3,8 +3,8 @@
 // proportional RSSI, reflective tape and specular metal. The curves are printed so the
 // numbers in the README can be regenerated.
 
-#include "lms100_emulator/scan_renderer.hpp"
 #include "reflector_extractor/extractor.hpp"
+#include "world_renderer/scan_renderer.hpp"
 
 #include <gtest/gtest.h>
 #include <Eigen/Dense>

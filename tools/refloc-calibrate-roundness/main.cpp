@@ -10,7 +10,7 @@
 #include "roundness_calibration.hpp"
 
 #ifdef REFLOC_HAVE_LMS100_EMULATOR
-#include "lms100_emulator/scan_renderer.hpp"
+#include "world_renderer/scan_renderer.hpp"
 #endif
 
 #include <fmt/core.h>

@@ -1,7 +1,7 @@
 #include "accuracy_study.hpp"
 
 #include "beam_crlb.hpp"
-#include "lms100_emulator/world_visibility.hpp"
+#include "world_renderer/world_visibility.hpp"
 
 #include <fmt/format.h>
 

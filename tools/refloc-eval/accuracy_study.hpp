@@ -4,9 +4,9 @@
 // pipeline modes, and compare with the truth and the Cramér-Rao bound.
 
 #include "common/se2.hpp"
-#include "lms100_emulator/scan_renderer.hpp"
-#include "lms100_emulator/world.hpp"
 #include "localization_pipeline.hpp"
+#include "world_renderer/scan_renderer.hpp"
+#include "world_renderer/world.hpp"
 
 #include <nlohmann/json.hpp>
 

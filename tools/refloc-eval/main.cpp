@@ -7,8 +7,8 @@
 #include "common/json_config.hpp"
 #include "common/reflector_map.hpp"
 #include "common/robot_config.hpp"
-#include "lms100_emulator/world_loader.hpp"
 #include "path_plot_svg.hpp"
+#include "world_renderer/world_loader.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>

@@ -5,10 +5,10 @@
 
 #include "common/laser_scan.hpp"
 #include "common/se2.hpp"
-#include "lms100_emulator/lms100_error_model.hpp"
-#include "lms100_emulator/scan_render_beam.hpp"
-#include "lms100_emulator/scan_render_index.hpp"
-#include "lms100_emulator/world.hpp"
+#include "world_renderer/lms100_error_model.hpp"
+#include "world_renderer/scan_render_beam.hpp"
+#include "world_renderer/scan_render_index.hpp"
+#include "world_renderer/world.hpp"
 
 #include <cstdint>
 #include <functional>

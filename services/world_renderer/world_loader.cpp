@@ -1,4 +1,4 @@
-#include "lms100_emulator/world_loader.hpp"
+#include "world_renderer/world_loader.hpp"
 
 #include "common/json_config.hpp"
 

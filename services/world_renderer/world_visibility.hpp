@@ -4,7 +4,7 @@
 // and by tests that need the expected detections of a pose.
 
 #include "common/se2.hpp"
-#include "lms100_emulator/world.hpp"
+#include "world_renderer/world.hpp"
 
 #include <vector>
 

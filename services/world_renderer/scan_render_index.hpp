@@ -10,8 +10,8 @@
 // scan is identical to testing everything (a test checks this).
 
 #include "common/se2.hpp"
-#include "lms100_emulator/scan_render_beam.hpp"
-#include "lms100_emulator/world.hpp"
+#include "world_renderer/scan_render_beam.hpp"
+#include "world_renderer/world.hpp"
 
 #include <cstdint>
 #include <vector>

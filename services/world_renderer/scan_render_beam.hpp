@@ -15,8 +15,8 @@
 // The sensor reports the nearest echo whose RSSI reaches rssi_at_detection_limit.
 
 #include "common/se2.hpp"
-#include "lms100_emulator/lms100_error_model.hpp"
-#include "lms100_emulator/world.hpp"
+#include "world_renderer/lms100_error_model.hpp"
+#include "world_renderer/world.hpp"
 
 #include <array>
 #include <cstdint>

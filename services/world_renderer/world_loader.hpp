@@ -23,7 +23,7 @@
 // (default false) and "remission" (defaults: walls/obstacles 0.5, tape 0.8, metal 0.05 for its diffuse part)
 // are optional. Coordinates are metres in the map frame.
 
-#include "lms100_emulator/world.hpp"
+#include "world_renderer/world.hpp"
 
 #include <string>
 

@@ -1,7 +1,7 @@
 #include "common/json_config.hpp"
-#include "lms100_emulator/scan_renderer.hpp"
-#include "lms100_emulator/world_loader.hpp"
-#include "lms100_emulator/world_visibility.hpp"
+#include "world_renderer/scan_renderer.hpp"
+#include "world_renderer/world_loader.hpp"
+#include "world_renderer/world_visibility.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

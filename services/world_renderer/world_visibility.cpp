@@ -1,4 +1,4 @@
-#include "lms100_emulator/world_visibility.hpp"
+#include "world_renderer/world_visibility.hpp"
 
 #include <algorithm>
 #include <cmath>

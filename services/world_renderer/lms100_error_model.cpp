@@ -1,4 +1,4 @@
-#include "lms100_emulator/lms100_error_model.hpp"
+#include "world_renderer/lms100_error_model.hpp"
 
 #include "common/json_config.hpp"
 

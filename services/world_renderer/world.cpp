@@ -1,4 +1,4 @@
-#include "lms100_emulator/world.hpp"
+#include "world_renderer/world.hpp"
 
 namespace refloc::sim {
 

@@ -1,4 +1,4 @@
-#include "lms100_emulator/scan_render_beam.hpp"
+#include "world_renderer/scan_render_beam.hpp"
 
 #include <algorithm>
 #include <cmath>

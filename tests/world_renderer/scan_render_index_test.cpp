@@ -1,6 +1,6 @@
-#include "lms100_emulator/scan_render_index.hpp"
-#include "lms100_emulator/scan_renderer.hpp"
-#include "lms100_emulator/world_loader.hpp"
+#include "world_renderer/scan_render_index.hpp"
+#include "world_renderer/scan_renderer.hpp"
+#include "world_renderer/world_loader.hpp"
 
 #include <gtest/gtest.h>
 

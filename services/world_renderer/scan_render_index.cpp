@@ -1,4 +1,4 @@
-#include "lms100_emulator/scan_render_index.hpp"
+#include "world_renderer/scan_render_index.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "lms100_emulator/scan_renderer.hpp"
+#include "world_renderer/scan_renderer.hpp"
 
 #include "common/json_config.hpp"
 

@@ -1,8 +1,8 @@
 // Rendering cost of one LMS100 scan (541 beams) in the demo hall (24 reflectors,
 // ~40 segments), static and moving, and how it scales with the beam sub-rays.
 
-#include "lms100_emulator/scan_renderer.hpp"
-#include "lms100_emulator/world_loader.hpp"
+#include "world_renderer/scan_renderer.hpp"
+#include "world_renderer/world_loader.hpp"
 
 #include <benchmark/benchmark.h>
 
