@@ -1,6 +1,6 @@
 #include "pose_solver/pose_solver.hpp"
 
-#include "pose_solver/gauss_newton_pose.hpp"
+#include "pose_solver/levenberg_marquardt_pose.hpp"
 #include "pose_solver/paper_trilateration.hpp"
 
 #include <Eigen/LU>
@@ -60,13 +60,13 @@ void PoseSolver::solve_default(PoseSolution& solution) {
   Pose2 estimate = map_T_laser * robot_T_laser_.inverse();
 
   int remaining = static_cast<int>(observations_.size());
-  GaussNewtonResult gn;
+  LevenbergMarquardtResult lm;
   while (true) {
-    gn = refine_pose(observations_, &use_, robot_T_laser_, estimate, config_.max_iterations,
+    lm = refine_pose(observations_, &use_, robot_T_laser_, estimate, config_.max_iterations,
                      config_.convergence_step);
-    solution.iterations += gn.iterations;
-    if (!gn.converged) return;
-    estimate = gn.map_T_robot;
+    solution.iterations += lm.iterations;
+    if (!lm.converged) return;
+    estimate = lm.map_T_robot;
     // Drop the worst match while it is an outlier and at least three remain.
     double worst = 0.0;
     size_t worst_index = 0;
@@ -82,8 +82,8 @@ void PoseSolver::solve_default(PoseSolution& solution) {
     use_[worst_index] = 0;
     --remaining;
   }
-  solution.map_T_robot = gn.map_T_robot;
-  solution.covariance = gn.covariance;
+  solution.map_T_robot = lm.map_T_robot;
+  solution.covariance = lm.covariance;
   finish(solution);
 }
 

@@ -121,9 +121,9 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
                                                    : reflector_matches_t::MODE_GLOBAL;
     out.hypothesis_score = result.hypothesis_score;
     out.runner_up_score = result.runner_up_score;
-    out.prior_x = result.map_T_laser.x;
-    out.prior_y = result.map_T_laser.y;
-    out.prior_theta = result.map_T_laser.theta;
+    out.hypothesis_x = result.map_T_laser.x;
+    out.hypothesis_y = result.map_T_laser.y;
+    out.hypothesis_theta = result.map_T_laser.theta;
     out.ndetections = static_cast<int32_t>(msg.reflectors.size());
     out.matches.clear();
     for (const ReflectorMatch& m : result.matches) {

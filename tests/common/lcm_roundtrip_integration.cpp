@@ -153,9 +153,9 @@ reflector_matches_t sample_matches() {
   m.mode = reflector_matches_t::MODE_GLOBAL;
   m.hypothesis_score = 6.5;
   m.runner_up_score = 6.25;
-  m.prior_x = 1.5;
-  m.prior_y = -2.5;
-  m.prior_theta = 3.0;
+  m.hypothesis_x = 1.5;
+  m.hypothesis_y = -2.5;
+  m.hypothesis_theta = 3.0;
   m.ndetections = 7;
   for (int k = 0; k < 5; ++k) m.matches.push_back(sample_match(k));
   m.nmatches = static_cast<int32_t>(m.matches.size());
@@ -169,9 +169,9 @@ void expect_eq(const reflector_matches_t& a, const reflector_matches_t& b) {
   EXPECT_EQ(a.mode, b.mode);
   EXPECT_EQ(a.hypothesis_score, b.hypothesis_score);
   EXPECT_EQ(a.runner_up_score, b.runner_up_score);
-  EXPECT_EQ(a.prior_x, b.prior_x);
-  EXPECT_EQ(a.prior_y, b.prior_y);
-  EXPECT_EQ(a.prior_theta, b.prior_theta);
+  EXPECT_EQ(a.hypothesis_x, b.hypothesis_x);
+  EXPECT_EQ(a.hypothesis_y, b.hypothesis_y);
+  EXPECT_EQ(a.hypothesis_theta, b.hypothesis_theta);
   EXPECT_EQ(a.ndetections, b.ndetections);
   ASSERT_EQ(a.nmatches, b.nmatches);
   for (int k = 0; k < a.nmatches; ++k) expect_eq(a.matches[k], b.matches[k]);

@@ -170,9 +170,9 @@ OrderedJson to_json(const reflector_matches_t& m) {
           {"mode", static_cast<int>(m.mode)},
           {"hypothesis_score", m.hypothesis_score},
           {"runner_up_score", m.runner_up_score},
-          {"prior_x", m.prior_x},
-          {"prior_y", m.prior_y},
-          {"prior_theta", m.prior_theta},
+          {"hypothesis_x", m.hypothesis_x},
+          {"hypothesis_y", m.hypothesis_y},
+          {"hypothesis_theta", m.hypothesis_theta},
           {"ndetections", m.ndetections},
           {"nmatches", m.nmatches},
           {"matches", std::move(matches)}};

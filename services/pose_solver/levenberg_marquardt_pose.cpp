@@ -1,4 +1,4 @@
-#include "pose_solver/gauss_newton_pose.hpp"
+#include "pose_solver/levenberg_marquardt_pose.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -52,10 +52,11 @@ Eigen::Matrix3d pose_information(const std::vector<PointObservation>& observatio
   return h;
 }
 
-GaussNewtonResult refine_pose(const std::vector<PointObservation>& observations, const std::vector<char>* use,
-                              const Pose2& robot_T_laser, const Pose2& initial_map_T_robot,
-                              int max_iterations, double convergence_step) {
-  GaussNewtonResult result;
+LevenbergMarquardtResult refine_pose(const std::vector<PointObservation>& observations,
+                                     const std::vector<char>* use, const Pose2& robot_T_laser,
+                                     const Pose2& initial_map_T_robot, int max_iterations,
+                                     double convergence_step) {
+  LevenbergMarquardtResult result;
   result.map_T_robot = initial_map_T_robot;
   Eigen::Vector2d e;
   Eigen::Matrix<double, 2, 3> j;

@@ -13,7 +13,7 @@
 
 namespace refloc {
 
-struct GaussNewtonResult {
+struct LevenbergMarquardtResult {
   bool converged = false;
   Pose2 map_T_robot;
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  ///< (J^T W J)^-1 at the solution
@@ -22,9 +22,10 @@ struct GaussNewtonResult {
 };
 
 /// Refine map_T_robot from initial using the observations with use[i] != 0 (all if use is null).
-GaussNewtonResult refine_pose(const std::vector<PointObservation>& observations, const std::vector<char>* use,
-                              const Pose2& robot_T_laser, const Pose2& initial_map_T_robot,
-                              int max_iterations, double convergence_step);
+LevenbergMarquardtResult refine_pose(const std::vector<PointObservation>& observations,
+                                     const std::vector<char>* use, const Pose2& robot_T_laser,
+                                     const Pose2& initial_map_T_robot, int max_iterations,
+                                     double convergence_step);
 
 /// Normalised residual sqrt(e^T W e) of one observation at map_T_robot.
 double normalised_residual(const PointObservation& o, const Pose2& map_T_robot, const Pose2& robot_T_laser);
