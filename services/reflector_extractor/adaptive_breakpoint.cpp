@@ -14,11 +14,11 @@ double AdaptiveBreakpointClusterer::max_distance(double range_prev, double dphi)
   return range_prev * std::sin(dphi) / denominator + 3.0 * config_.range_sigma;
 }
 
-void AdaptiveBreakpointClusterer::cluster(const LaserScan& scan, const std::vector<uint8_t>& selected,
+void AdaptiveBreakpointClusterer::cluster(const BeamTable& table, const std::vector<uint8_t>& selected,
                                           std::vector<BeamCluster>& clusters) const {
   clusters.clear();
-  const int n = static_cast<int>(std::min(scan.ranges.size(), selected.size()));
-  const double dphi = std::abs(scan.angle_increment);
+  const int n = static_cast<int>(std::min(table.size(), selected.size()));
+  const double dphi = std::abs(table.angle_increment);
   const int max_gap = config_.max_gap_beams < 0 ? std::numeric_limits<int>::max() : config_.max_gap_beams;
   int prev = -1;
   double prev_x = 0.0;
@@ -26,10 +26,10 @@ void AdaptiveBreakpointClusterer::cluster(const LaserScan& scan, const std::vect
   double prev_r = 0.0;
   for (int i = 0; i < n; ++i) {
     if (selected[static_cast<size_t>(i)] == 0) continue;
-    const double r = static_cast<double>(scan.ranges[static_cast<size_t>(i)]);
-    const double a = scan.beam_angle(static_cast<size_t>(i));
-    const double x = r * std::cos(a);
-    const double y = r * std::sin(a);
+    const TableBeam& beam = table.beams[static_cast<size_t>(i)];
+    const double r = beam.range;
+    const double x = beam.point.x();
+    const double y = beam.point.y();
     bool joins = false;
     if (prev >= 0 && i - prev - 1 <= max_gap) {
       joins = std::hypot(x - prev_x, y - prev_y) <= max_distance(prev_r, dphi);

@@ -5,7 +5,7 @@
 // the distance the next beam would see on a surface inclined at lambda to the beam,
 // so the threshold grows with range instead of being one fixed distance.
 
-#include "common/laser_scan.hpp"
+#include "reflector_extractor/beam_table.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -37,7 +37,7 @@ class AdaptiveBreakpointClusterer {
 
   /// Cluster the beams with selected[i] != 0 in beam order; clusters is overwritten
   /// (its storage reused, so the per-scan path does not allocate once warmed up).
-  void cluster(const LaserScan& scan, const std::vector<uint8_t>& selected,
+  void cluster(const BeamTable& table, const std::vector<uint8_t>& selected,
                std::vector<BeamCluster>& clusters) const;
 
   const AdaptiveBreakpointConfig& config() const { return config_; }

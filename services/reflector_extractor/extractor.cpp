@@ -25,64 +25,67 @@ ReflectorExtractor::ReflectorExtractor(ExtractorConfig config)
 }
 
 const std::vector<ReflectorDetection>& ReflectorExtractor::extract(const LaserScan& scan) {
+  make_beam_table(scan, table_);
+  return extract(table_);
+}
+
+const std::vector<ReflectorDetection>& ReflectorExtractor::extract(const BeamTable& table) {
   stats_ = ExtractionStats{};
   detections_.clear();
-  select_high_energy_beams(scan, config_.energy_threshold_8bit, high_energy_);
-  clusterer_.cluster(scan, high_energy_, clusters_);
+  select_high_energy_beams(table, config_.energy_threshold_8bit, high_energy_);
+  clusterer_.cluster(table, high_energy_, clusters_);
   for (const BeamCluster& cluster : clusters_) {
     ++stats_.clusters_considered;
     if (config_.mode == ExtractorConfig::Mode::kPaper) {
-      process_cluster_paper(scan, cluster);
+      process_cluster_paper(table, cluster);
     } else {
-      process_cluster_default(scan, cluster);
+      process_cluster_default(table, cluster);
     }
   }
   return detections_;
 }
 
-void ReflectorExtractor::gather_beams(const LaserScan& scan, const BeamCluster& cluster) {
+void ReflectorExtractor::gather_beams(const BeamTable& table, const BeamCluster& cluster) {
   beams_.clear();
   beam_rssi_.clear();
   const double weight = 1.0 / (config_.clustering.range_sigma * config_.clustering.range_sigma);
   for (int i = cluster.first; i <= cluster.last; ++i) {
     const size_t k = static_cast<size_t>(i);
     if (high_energy_[k] == 0) continue;
-    const double angle = scan.beam_angle(k);
+    const TableBeam& t = table.beams[k];
     FitBeam b;
-    b.direction = Eigen::Vector2d(std::cos(angle), std::sin(angle));
-    b.range = static_cast<double>(scan.ranges[k]);
-    b.point = b.range * b.direction;
+    b.direction = t.direction;
+    b.range = t.range;
+    b.point = t.point;
     b.weight = weight;
     beams_.push_back(b);
-    beam_rssi_.push_back(rssi_8bit(scan, k));
+    beam_rssi_.push_back(t.rssi_8bit);
   }
 }
 
-bool ReflectorExtractor::occluded(const LaserScan& scan, const BeamCluster& cluster) const {
-  const int n = static_cast<int>(scan.ranges.size());
+bool ReflectorExtractor::occluded(const BeamTable& table, const BeamCluster& cluster) const {
+  const int n = static_cast<int>(table.size());
   const int neighbours[2] = {cluster.first - 1, cluster.last + 1};
   const int edges[2] = {cluster.first, cluster.last};
   for (int side = 0; side < 2; ++side) {
     const int j = neighbours[side];
     if (j < 0 || j >= n) continue;
-    const size_t k = static_cast<size_t>(j);
-    const double r = static_cast<double>(scan.ranges[k]);
-    const bool dazzled = r > 0.0 && r < scan.range_min;
-    if (dazzled && config_.reject_next_to_dazzled) return true;
-    if (config_.reject_occluded && is_echo(scan, k) &&
-        r < static_cast<double>(scan.ranges[static_cast<size_t>(edges[side])]) - config_.occlusion_margin) {
+    const TableBeam& neighbour = table.beams[static_cast<size_t>(j)];
+    if (neighbour.kind == BeamKind::kDazzled && config_.reject_next_to_dazzled) return true;
+    if (config_.reject_occluded && neighbour.kind == BeamKind::kEcho &&
+        neighbour.range < table.beams[static_cast<size_t>(edges[side])].range - config_.occlusion_margin) {
       return true;
     }
   }
   return false;
 }
 
-void ReflectorExtractor::process_cluster_paper(const LaserScan& scan, const BeamCluster& cluster) {
+void ReflectorExtractor::process_cluster_paper(const BeamTable& table, const BeamCluster& cluster) {
   if (cluster.num_selected < std::max(config_.min_beams, 3)) {
     ++stats_.rejected_too_few_beams;
     return;
   }
-  gather_beams(scan, cluster);
+  gather_beams(table, cluster);
   CircleFit fit;
   if (!fit_circle_algebraic(beams_, config_.clustering.range_sigma, fit)) {
     ++stats_.rejected_fit_failed;
@@ -97,19 +100,19 @@ void ReflectorExtractor::process_cluster_paper(const LaserScan& scan, const Beam
     ++stats_.rejected_not_round;
     return;
   }
-  emit(scan, cluster, fit, d_bar, fit.radius);
+  emit(table, cluster, fit, d_bar, fit.radius);
 }
 
-void ReflectorExtractor::process_cluster_default(const LaserScan& scan, const BeamCluster& cluster) {
+void ReflectorExtractor::process_cluster_default(const BeamTable& table, const BeamCluster& cluster) {
   if (cluster.num_selected < config_.min_beams) {
     ++stats_.rejected_too_few_beams;
     return;
   }
-  if (occluded(scan, cluster)) {
+  if (occluded(table, cluster)) {
     ++stats_.rejected_occluded;
     return;
   }
-  gather_beams(scan, cluster);
+  gather_beams(table, cluster);
   // Partial hits at the edges: drop at most one beam a side, never below min_beams.
   const double brightest = *std::max_element(beam_rssi_.begin(), beam_rssi_.end());
   const double edge_floor = config_.edge_rssi_ratio * brightest;
@@ -155,7 +158,7 @@ void ReflectorExtractor::process_cluster_default(const LaserScan& scan, const Be
     if (beams_.size() == 1) {
       // One beam (min_beams = 1, far reflectors): the centre is somewhere across the beam
       // step, uniformly: the fit's rank-deficient information says nothing useful there.
-      const double step = std::abs(scan.angle_increment) * range;
+      const double step = std::abs(table.angle_increment) * range;
       const double sigma_r = config_.clustering.range_sigma;
       fit.covariance =
           sigma_r * sigma_r * along * along.transpose() + step * step / 12.0 * across * across.transpose();
@@ -163,23 +166,23 @@ void ReflectorExtractor::process_cluster_default(const LaserScan& scan, const Be
     const double sigma = config_.angle_sigma * range;
     fit.covariance += sigma * sigma * across * across.transpose();
   }
-  emit(scan, cluster, fit, mean_abs_range_residual(beams_, fit, config_.fit.min_incidence_cos),
+  emit(table, cluster, fit, mean_abs_range_residual(beams_, fit, config_.fit.min_incidence_cos),
        have_free ? free_fit.radius : fit.radius);
 }
 
-void ReflectorExtractor::emit(const LaserScan& scan, const BeamCluster& cluster, const CircleFit& fit,
+void ReflectorExtractor::emit(const BeamTable& table, const BeamCluster& cluster, const CircleFit& fit,
                               double roundness, double fitted_radius) {
   ReflectorDetection d;
   d.laser_p_center = fit.center;
   d.covariance = fit.covariance;
   d.range = fit.center.norm();
   d.bearing = std::atan2(fit.center.y(), fit.center.x());
-  d.utime = scan.beam_utime(static_cast<size_t>((cluster.first + cluster.last) / 2));
+  d.utime = table.beam_utime(static_cast<size_t>((cluster.first + cluster.last) / 2));
   d.first_beam = cluster.first;
   d.num_beams = cluster.num_selected;
   double rssi_sum = 0.0;
   for (int i = cluster.first; i <= cluster.last; ++i) {
-    if (high_energy_[static_cast<size_t>(i)] != 0) rssi_sum += rssi_8bit(scan, static_cast<size_t>(i));
+    if (high_energy_[static_cast<size_t>(i)] != 0) rssi_sum += table.beams[static_cast<size_t>(i)].rssi_8bit;
   }
   d.mean_rssi = rssi_sum / static_cast<double>(std::max(cluster.num_selected, 1));
   d.roundness_m = roundness;

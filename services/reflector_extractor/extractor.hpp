@@ -8,6 +8,7 @@
 #include "common/laser_scan.hpp"
 #include "common/reflector_detection.hpp"
 #include "reflector_extractor/adaptive_breakpoint.hpp"
+#include "reflector_extractor/beam_table.hpp"
 #include "reflector_extractor/circle_fit.hpp"
 #include "reflector_extractor/roundness.hpp"
 
@@ -73,21 +74,24 @@ class ReflectorExtractor {
   /// Detections in scan, in beam order; the reference stays valid until the next call.
   /// No allocation once the internal buffers have grown to the largest scan seen.
   const std::vector<ReflectorDetection>& extract(const LaserScan& scan);
+  /// The same from a scan already read into a beam table.
+  const std::vector<ReflectorDetection>& extract(const BeamTable& table);
 
   const ExtractionStats& stats() const { return stats_; }
   const ExtractorConfig& config() const { return config_; }
 
  private:
-  void gather_beams(const LaserScan& scan, const BeamCluster& cluster);
-  bool occluded(const LaserScan& scan, const BeamCluster& cluster) const;
-  void process_cluster_paper(const LaserScan& scan, const BeamCluster& cluster);
-  void process_cluster_default(const LaserScan& scan, const BeamCluster& cluster);
-  void emit(const LaserScan& scan, const BeamCluster& cluster, const CircleFit& fit, double roundness,
+  void gather_beams(const BeamTable& table, const BeamCluster& cluster);
+  bool occluded(const BeamTable& table, const BeamCluster& cluster) const;
+  void process_cluster_paper(const BeamTable& table, const BeamCluster& cluster);
+  void process_cluster_default(const BeamTable& table, const BeamCluster& cluster);
+  void emit(const BeamTable& table, const BeamCluster& cluster, const CircleFit& fit, double roundness,
             double fitted_radius);
 
   ExtractorConfig config_;
   AdaptiveBreakpointClusterer clusterer_;
   ExtractionStats stats_;
+  BeamTable table_;
   std::vector<uint8_t> high_energy_;
   std::vector<BeamCluster> clusters_;
   std::vector<FitBeam> beams_;

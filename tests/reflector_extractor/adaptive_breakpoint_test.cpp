@@ -23,10 +23,12 @@ std::vector<BeamCluster> cluster_scene(const SyntheticScene& scene, uint32_t see
                                        AdaptiveBreakpointConfig config = {}) {
   std::mt19937 rng(seed);
   const LaserScan scan = render_synthetic_scan(scene, SyntheticScanConfig{}, rng);
+  BeamTable table;
+  make_beam_table(scan, table);
   std::vector<uint8_t> high;
-  select_high_energy_beams(scan, 180.0, high);
+  select_high_energy_beams(table, 180.0, high);
   std::vector<BeamCluster> clusters;
-  AdaptiveBreakpointClusterer(config).cluster(scan, high, clusters);
+  AdaptiveBreakpointClusterer(config).cluster(table, high, clusters);
   return clusters;
 }
 
@@ -74,13 +76,15 @@ TEST(AdaptiveBreakpoint, PaperModeClustersAcrossDullBeamsButDefaultDoesNot) {
   scan.start_angle = 0.0;
   scan.angle_increment = 0.5 * kDeg;
   scan.ranges = {2.0f, 2.0f, 2.0f, 2.0f};
+  BeamTable table;
+  make_beam_table(scan, table);
   std::vector<uint8_t> selected = {1, 1, 0, 1};
   std::vector<BeamCluster> clusters;
-  AdaptiveBreakpointClusterer().cluster(scan, selected, clusters);
+  AdaptiveBreakpointClusterer().cluster(table, selected, clusters);
   EXPECT_EQ(clusters.size(), 2u);
   AdaptiveBreakpointConfig paper;
   paper.max_gap_beams = -1;
-  AdaptiveBreakpointClusterer(paper).cluster(scan, selected, clusters);
+  AdaptiveBreakpointClusterer(paper).cluster(table, selected, clusters);
   ASSERT_EQ(clusters.size(), 1u);
   EXPECT_EQ(clusters[0].first, 0);
   EXPECT_EQ(clusters[0].last, 3);

@@ -5,6 +5,12 @@
 namespace refloc {
 namespace {
 
+BeamTable table_of(const LaserScan& scan) {
+  BeamTable table;
+  make_beam_table(scan, table);
+  return table;
+}
+
 LaserScan three_beam_scan(int bits, std::vector<int32_t> rssi) {
   LaserScan scan;
   scan.start_angle = 0.0;
@@ -19,15 +25,15 @@ TEST(EnergyFilter, SixteenBitRssiIsDividedBy257BeforeThePaperThreshold180) {
   // 180 * 257 = 46260: one count below must fail, the value itself must pass.
   const LaserScan scan = three_beam_scan(16, {46259, 46260, 65535});
   std::vector<uint8_t> high;
-  select_high_energy_beams(scan, 180.0, high);
+  select_high_energy_beams(table_of(scan), 180.0, high);
   EXPECT_EQ(high, (std::vector<uint8_t>{0, 1, 1}));
-  EXPECT_DOUBLE_EQ(rssi_8bit(scan, 2), 255.0);
+  EXPECT_DOUBLE_EQ(table_of(scan).beams[2].rssi_8bit, 255.0);
 }
 
 TEST(EnergyFilter, EightBitRssiIsComparedAsIs) {
   const LaserScan scan = three_beam_scan(8, {179, 180, 255});
   std::vector<uint8_t> high;
-  select_high_energy_beams(scan, 180.0, high);
+  select_high_energy_beams(table_of(scan), 180.0, high);
   EXPECT_EQ(high, (std::vector<uint8_t>{0, 1, 1}));
 }
 
@@ -35,14 +41,14 @@ TEST(EnergyFilter, NoEchoAndDazzledBeamsNeverPassEvenWhenBright) {
   LaserScan scan = three_beam_scan(16, {65535, 65535, 65535});
   scan.ranges = {0.0f, 0.001f, 3.0f};
   std::vector<uint8_t> high;
-  select_high_energy_beams(scan, 180.0, high);
+  select_high_energy_beams(table_of(scan), 180.0, high);
   EXPECT_EQ(high, (std::vector<uint8_t>{0, 0, 1}));
 }
 
 TEST(EnergyFilter, ScanWithoutRssiSelectsNothing) {
   LaserScan scan = three_beam_scan(0, {});
   std::vector<uint8_t> high;
-  select_high_energy_beams(scan, 180.0, high);
+  select_high_energy_beams(table_of(scan), 180.0, high);
   EXPECT_EQ(high, (std::vector<uint8_t>{0, 0, 0}));
 }
 

@@ -55,11 +55,13 @@ BENCHMARK(BM_ExtractPaperMode);
 void BM_EnergyFilterAndClustering(benchmark::State& state) {
   const LaserScan scan = hall_scan();
   AdaptiveBreakpointClusterer clusterer;
+  BeamTable table;
   std::vector<uint8_t> high;
   std::vector<BeamCluster> clusters;
   for (auto _ : state) {
-    select_high_energy_beams(scan, 180.0, high);
-    clusterer.cluster(scan, high, clusters);
+    make_beam_table(scan, table);
+    select_high_energy_beams(table, 180.0, high);
+    clusterer.cluster(table, high, clusters);
     benchmark::DoNotOptimize(clusters.data());
   }
   state.counters["clusters"] = static_cast<double>(clusters.size());
