@@ -11,6 +11,7 @@
 // solution, and the left-over direction (w_fl + w_fr - w_rr - w_rl), zero for
 // any rigid body motion, measures how much the wheels disagree (slip).
 
+#include "common/body_twist.hpp"
 #include "common/robot_config.hpp"
 
 #include <array>
@@ -19,13 +20,6 @@ namespace refloc {
 
 /// Four wheel values in the order front-left, front-right, rear-right, rear-left.
 using WheelArray = std::array<double, 4>;
-
-/// A planar body velocity [m/s, m/s, rad/s], or a body displacement [m, m, rad].
-struct BodyTwist {
-  double vx = 0.0;
-  double vy = 0.0;
-  double wz = 0.0;
-};
 
 class MecanumKinematics {
  public:

@@ -20,6 +20,7 @@ RobotConfig parse_robot_config(const JsonConfig& config, const std::string& poin
   robot.robot_T_laser.y = config.number(p + "/laser_mount/y_m", robot.robot_T_laser.y, -5.0, 5.0);
   robot.robot_T_laser.theta =
       config.number(p + "/laser_mount/theta_rad", robot.robot_T_laser.theta, -M_PI, M_PI);
+  robot.odometry_noise = parse_odometry_noise(config, p + "/odometry_noise");
   // A human-readable statement of the conventions; read only so it is a known key.
   config.string(p + "/wheel_order", "");
   return robot;

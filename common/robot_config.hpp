@@ -1,11 +1,13 @@
 #pragma once
-// The robot's geometry and drive limits (deploy/config/robot.json), shared by
-// mecanum_odometry, robot_sim, navigator and the pose solver (laser mount).
+// The robot's geometry, drive limits and odometry noise (deploy/config/robot.json),
+// shared by mecanum_odometry, pose_fusion, robot_sim, navigator and the pose solver
+// (laser mount).
 //
 // Wheel order everywhere: front-left, front-right, rear-right, rear-left.
 // Body frame: +x forward, +y left, +wz counter-clockwise. A positive wheel
 // spin drives that wheel's contact point forward.
 
+#include "common/odometry_noise.hpp"
 #include "common/se2.hpp"
 
 #include <string>
@@ -22,6 +24,7 @@ struct RobotConfig {
   double max_wheel_speed = 20.0;        ///< [rad/s]
   double max_wheel_accel = 20.0;        ///< [rad/s^2]
   Pose2 robot_T_laser{0.30, 0.0, 0.0};  ///< laser mount in the robot frame [m, m, rad]
+  OdometryNoise odometry_noise;         ///< wheel-odometry increment noise (section "odometry_noise")
 };
 
 /// Read a RobotConfig from the object at pointer ("" = root) of a loaded document.

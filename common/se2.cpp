@@ -4,33 +4,21 @@
 
 namespace refloc {
 
-double wrap_angle(double angle_rad) {
-  double wrapped = std::remainder(angle_rad, 2.0 * M_PI);  // in [-pi, pi]
-  if (wrapped <= -M_PI) wrapped += 2.0 * M_PI;
-  return wrapped;
-}
+namespace {
 
-double angle_diff(double a_rad, double b_rad) { return wrap_angle(a_rad - b_rad); }
-
-double circular_mean(const std::vector<double>& angles_rad) {
-  double s = 0.0, c = 0.0;
-  for (double a : angles_rad) {
-    s += std::sin(a);
-    c += std::cos(a);
+// sin(a)/a and (1 - cos(a))/a, the entries of the SE(2) exponential's V(a), with
+// their Taylor series near 0 where the ratios lose precision.
+void arc_coefficients(double a, double& sin_over_a, double& one_minus_cos_over_a) {
+  if (std::abs(a) < 1e-6) {
+    sin_over_a = 1.0 - a * a / 6.0;
+    one_minus_cos_over_a = a / 2.0 - a * a * a / 24.0;
+  } else {
+    sin_over_a = std::sin(a) / a;
+    one_minus_cos_over_a = (1.0 - std::cos(a)) / a;
   }
-  if (s == 0.0 && c == 0.0) return 0.0;
-  return std::atan2(s, c);
 }
 
-double circular_mean(const std::vector<double>& angles_rad, const std::vector<double>& weights) {
-  double s = 0.0, c = 0.0;
-  for (size_t i = 0; i < angles_rad.size() && i < weights.size(); ++i) {
-    s += weights[i] * std::sin(angles_rad[i]);
-    c += weights[i] * std::cos(angles_rad[i]);
-  }
-  if (s == 0.0 && c == 0.0) return 0.0;
-  return std::atan2(s, c);
-}
+}  // namespace
 
 Eigen::Matrix2d Pose2::rotation() const {
   const double c = std::cos(theta), s = std::sin(theta);
@@ -64,6 +52,22 @@ Pose2 Pose2::inverse() const {
 
 bool approx_equal(const Pose2& a, const Pose2& b, double tol_m, double tol_rad) {
   return std::hypot(a.x - b.x, a.y - b.y) <= tol_m && std::abs(angle_diff(a.theta, b.theta)) <= tol_rad;
+}
+
+Pose2 se2_exp(const BodyTwist& twist, double dt) {
+  const double dx = twist.vx * dt, dy = twist.vy * dt, a = twist.wz * dt;
+  double s, c;
+  arc_coefficients(a, s, c);
+  return {s * dx - c * dy, c * dx + s * dy, wrap_angle(a)};
+}
+
+BodyTwist se2_log(const Pose2& start_T_end) {
+  const double a = wrap_angle(start_T_end.theta);
+  double s, c;
+  arc_coefficients(a, s, c);
+  // Invert V(a) = [s -c; c s] (determinant s^2 + c^2 > 0 for |a| < 2 pi).
+  const double det = s * s + c * c;
+  return {(s * start_T_end.x + c * start_T_end.y) / det, (-c * start_T_end.x + s * start_T_end.y) / det, a};
 }
 
 }  // namespace refloc

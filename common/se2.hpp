@@ -1,23 +1,14 @@
 #pragma once
 // SE(2) geometry. Frame naming follows Sophus: a_T_b takes points in frame b
-// into frame a, a_p_x is point x expressed in frame a.
+// into frame a, a_p_x is point x expressed in frame a. BodyTwist is the tangent
+// space; se2_exp / se2_log map between the two.
+
+#include "common/angles.hpp"
+#include "common/body_twist.hpp"
 
 #include <Eigen/Core>
-#include <vector>
 
 namespace refloc {
-
-/// Wrap an angle to (-pi, pi] [rad].
-double wrap_angle(double angle_rad);
-
-/// Smallest signed difference a - b, wrapped to (-pi, pi] [rad].
-double angle_diff(double a_rad, double b_rad);
-
-/// Mean direction of angles (atan2 of summed unit vectors) [rad]; 0 for an empty input.
-double circular_mean(const std::vector<double>& angles_rad);
-
-/// Weighted circular mean [rad]; weights must be >= 0.
-double circular_mean(const std::vector<double>& angles_rad, const std::vector<double>& weights);
 
 /// A rigid transform in the plane: rotation by theta [rad], then translation (x, y) [m].
 struct Pose2 {
@@ -38,5 +29,14 @@ struct Pose2 {
 
 /// Same pose up to tol_m in translation and tol_rad in wrapped heading.
 bool approx_equal(const Pose2& a, const Pose2& b, double tol_m, double tol_rad);
+
+/// The SE(2) exponential: start_T_end of a frame holding a constant body twist for
+/// dt [s], an exact circular arc. Heading wrapped to (-pi, pi] like every Pose2.
+Pose2 se2_exp(const BodyTwist& twist, double dt = 1.0);
+
+/// The SE(2) logarithm, inverse of se2_exp for dt = 1: the constant body displacement
+/// [m, m, rad] whose arc ends at start_T_end. wz = wrap_angle(start_T_end.theta), so
+/// se2_exp(se2_log(x)) == x for every x and se2_log(se2_exp(t)) == t for |t.wz| < pi.
+BodyTwist se2_log(const Pose2& start_T_end);
 
 }  // namespace refloc

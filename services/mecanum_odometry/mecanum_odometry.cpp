@@ -1,14 +1,17 @@
 #include "mecanum_odometry/mecanum_odometry.hpp"
 
+#include "common/covariance_propagation.hpp"
 #include "mecanum_odometry/encoder_ticks.hpp"
-#include "mecanum_odometry/exact_arc.hpp"
 
 #include <cmath>
 
 namespace refloc {
 
 MecanumOdometry::MecanumOdometry(const RobotConfig& robot, const OdometryConfig& config)
-    : kinematics_(robot), config_(config), rad_per_tick_(2.0 * M_PI / robot.encoder_ticks_per_rev) {}
+    : kinematics_(robot),
+      noise_(robot.odometry_noise),
+      config_(config),
+      rad_per_tick_(2.0 * M_PI / robot.encoder_ticks_per_rev) {}
 
 EncoderSampleResult MecanumOdometry::add_sample(int64_t utime, const std::array<int32_t, 4>& ticks) {
   if (!has_previous_) {
@@ -38,11 +41,11 @@ EncoderSampleResult MecanumOdometry::add_sample(int64_t utime, const std::array<
     return EncoderSampleResult::kImplausible;
   }
   // Wheel angles over the interval give the body displacement of a constant
-  // twist held for dt; exp_twist turns it into the exact arc.
+  // twist held for dt; se2_exp turns it into the exact arc.
   const BodyTwist displacement = kinematics_.forward(angle);
-  const Pose2 delta = exp_twist(displacement, 1.0);
+  const Pose2 delta = se2_exp(displacement);
   estimate_.covariance = compose_covariance(estimate_.odom_T_robot, estimate_.covariance, delta,
-                                            increment_covariance(delta, config_.noise));
+                                            increment_covariance(delta, noise_));
   estimate_.odom_T_robot = estimate_.odom_T_robot * delta;
   estimate_.twist = {displacement.vx / dt, displacement.vy / dt, displacement.wz / dt};
   estimate_.distance += std::hypot(displacement.vx, displacement.vy);

@@ -2,10 +2,10 @@
 // Wheel odometry of the Mecanum base: cumulative encoder counts in, odom-frame
 // pose, body twist, growing covariance and a slip indicator out.
 
+#include "common/mecanum_kinematics.hpp"
+#include "common/odometry_noise.hpp"
 #include "common/robot_config.hpp"
 #include "common/se2.hpp"
-#include "mecanum_odometry/mecanum_kinematics.hpp"
-#include "mecanum_odometry/odometry_covariance.hpp"
 
 #include <Eigen/Core>
 
@@ -14,8 +14,9 @@
 
 namespace refloc {
 
+/// The service's own integration rules (mecanum_odometry.json); geometry and the
+/// increment noise are the robot's (RobotConfig, robot.json).
 struct OdometryConfig {
-  OdometryNoise noise;
   /// A gap between encoder samples longer than this restarts integration from
   /// the new counts (the motor controller was restarted; counts may have reset) [s].
   double max_gap = 1.0;
@@ -48,6 +49,7 @@ class MecanumOdometry {
 
  private:
   MecanumKinematics kinematics_;
+  OdometryNoise noise_;
   OdometryConfig config_;
   double rad_per_tick_;
   bool has_previous_ = false;

@@ -17,9 +17,6 @@ struct OdometryServiceConfig {
   std::string output_channel = "ODOMETRY";
 };
 
-/// Odometry noise coefficients from the object at pointer (keys *_m2_per_m, ...).
-OdometryNoise parse_odometry_noise(const JsonConfig& config, const std::string& pointer);
-
 /// The whole file; call config.reject_unknown_keys() afterwards.
 OdometryServiceConfig parse_odometry_service_config(const JsonConfig& config);
 

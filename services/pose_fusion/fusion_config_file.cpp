@@ -1,7 +1,6 @@
 #include "pose_fusion/fusion_config_file.hpp"
 
 #include "common/json_config.hpp"
-#include "mecanum_odometry/odometry_config_file.hpp"
 
 namespace refloc {
 
@@ -15,7 +14,6 @@ FusionServiceConfig parse_fusion_service_config(const JsonConfig& config) {
   f.max_consecutive_rejections = static_cast<int>(
       config.integer("/max_consecutive_rejections", f.max_consecutive_rejections, 1, 100000));
   f.max_fix_lead = config.number("/max_fix_lead_s", f.max_fix_lead, 0.0, 1.0);
-  c.odometry_noise = parse_odometry_noise(config, "/odometry_noise");
   OdometryContinuityConfig& o = c.continuity;
   o.max_gap = config.number("/odometry_max_gap_s", o.max_gap, 0.01, 60.0);
   o.max_speed = config.number("/odometry_seam_max_speed_m_s", o.max_speed, 0.01, 10.0);

@@ -2,7 +2,6 @@
 // pose_fusion's config file (deploy/config/pose_fusion.json). Every key is
 // optional with the default of the struct it fills.
 
-#include "mecanum_odometry/odometry_covariance.hpp"
 #include "pose_fusion/odometry_continuity.hpp"
 #include "pose_fusion/pose_fusion.hpp"
 
@@ -14,8 +13,6 @@ class JsonConfig;
 
 struct FusionServiceConfig {
   FusionConfig fusion;
-  /// Covariance of each odometry increment, as mecanum_odometry models it.
-  OdometryNoise odometry_noise;
   /// When consecutive ODOMETRY messages are not one continuous frame.
   OdometryContinuityConfig continuity;
   /// No ODOMETRY this long: fixes are published as DEGRADED POSE (OdometrySilence) [s].

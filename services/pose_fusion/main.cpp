@@ -4,6 +4,7 @@
 #include "common/clock.hpp"
 #include "common/json_config.hpp"
 #include "common/lcm_conversions.hpp"
+#include "common/robot_config.hpp"
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
 #include "pose_fusion/fusion_config_file.hpp"
@@ -54,7 +55,8 @@ std::optional<PoseFix> to_fix(const pose2d_t& msg) {
   return fix;
 }
 
-int run(const std::string& lcm_url, const std::string& config_path) {
+int run(const std::string& lcm_url, const std::string& robot_path, const std::string& config_path) {
+  const OdometryNoise odometry_noise = load_robot_config(robot_path).odometry_noise;
   FusionServiceConfig config;
   if (!config_path.empty()) {
     const JsonConfig file = JsonConfig::load_file(config_path);
@@ -103,7 +105,7 @@ int run(const std::string& lcm_url, const std::string& config_path) {
         spdlog::warn("ODOMETRY went back in time by {:.3f} s: new odometry frame", -step.gap);
         break;
       case OdometryStepKind::kContinuous:
-        fusion.add_odometry(msg.utime, step.delta, increment_covariance(step.delta, config.odometry_noise));
+        fusion.add_odometry(msg.utime, step.delta, increment_covariance(step.delta, odometry_noise));
         break;
       case OdometryStepKind::kSeam:
         ++runtime.counter(step.restarted ? "odometry_restarts" : "odometry_gaps");
@@ -111,7 +113,7 @@ int run(const std::string& lcm_url, const std::string& config_path) {
             "ODOMETRY {} after {:.3f} s: motion meanwhile unobserved, waiting for a fix to re-anchor",
             step.restarted ? "restarted" : "resumed", step.gap);
         fusion.add_odometry_seam(msg.utime, step.delta,
-                                 increment_covariance(step.delta, config.odometry_noise) + step.unobserved_q);
+                                 increment_covariance(step.delta, odometry_noise) + step.unobserved_q);
         break;
     }
     for (const FixResult r : fusion.deferred_results()) count_fix_result(r);
@@ -169,5 +171,6 @@ int main(int argc, char** argv) {
   refloc::ServiceCommandLine cli(
       "pose_fusion",
       "EKF fusion of wheel odometry and delayed laser pose fixes: ODOMETRY + LASER_POSE -> POSE", "");
-  return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path); });
+  cli.add_robot_option("robot file (JSON): the odometry noise model");
+  return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.robot_path, cli.config_path); });
 }

@@ -1,6 +1,6 @@
 #include "pose_fusion/pose_ekf.hpp"
 
-#include "mecanum_odometry/odometry_covariance.hpp"
+#include "common/covariance_propagation.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>

@@ -1,6 +1,6 @@
 #include "pose_fusion/pose_fusion.hpp"
 
-#include "mecanum_odometry/exact_arc.hpp"
+#include "common/se2.hpp"
 
 #include <algorithm>
 
@@ -109,7 +109,7 @@ long PoseFusion::step_ending_at(int64_t t) {
   const double alpha = static_cast<double>(t - start) / static_cast<double>(steps_[i].utime - start);
   Step first;
   first.utime = t;
-  first.delta = exp_twist(log_pose(steps_[i].delta), alpha);
+  first.delta = se2_exp(se2_log(steps_[i].delta), alpha);
   first.q = alpha * steps_[i].q;
   steps_[i].delta = first.delta.inverse() * steps_[i].delta;
   steps_[i].q *= 1.0 - alpha;

@@ -4,25 +4,8 @@
 
 namespace refloc {
 
-Pose2 integrate_twist(const BodyTwist& twist, double dt) {
-  const double theta = twist.wz * dt;
-  // V(theta) of the SE(2) exponential; its Taylor series near zero avoids 0/0.
-  double a = 1.0;  // sin(theta) / theta
-  double b = 0.0;  // (1 - cos(theta)) / theta
-  if (std::abs(theta) > 1e-6) {
-    a = std::sin(theta) / theta;
-    b = (1.0 - std::cos(theta)) / theta;
-  } else {
-    a = 1.0 - theta * theta / 6.0;
-    b = theta / 2.0 - theta * theta * theta / 24.0;
-  }
-  const double ux = twist.vx * dt;
-  const double uy = twist.vy * dt;
-  return Pose2{a * ux - b * uy, b * ux + a * uy, theta};
-}
-
 Pose2 laser_motion(const BodyTwist& robot_twist, const Pose2& robot_T_laser, double dt) {
-  return robot_T_laser.inverse() * integrate_twist(robot_twist, dt) * robot_T_laser;
+  return robot_T_laser.inverse() * se2_exp(robot_twist, dt) * robot_T_laser;
 }
 
 void compensate_motion(std::vector<ReflectorDetection>& detections, int64_t reference_utime,

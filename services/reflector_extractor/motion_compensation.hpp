@@ -2,7 +2,7 @@
 // Motion compensation: the LMS100 sweeps 270 deg in ~15 ms, during which the robot
 // moves. Each detection is measured at its own beam time; this moves its centre into the
 // laser frame at the scan's reference time (first beam) with exact SE(2) motion under a
-// constant body twist.
+// constant body twist (se2_exp).
 
 #include "common/reflector_detection.hpp"
 #include "common/se2.hpp"
@@ -11,17 +11,6 @@
 #include <vector>
 
 namespace refloc {
-
-/// Body twist of the robot: velocities in its own frame.
-struct BodyTwist {
-  double vx = 0.0;  ///< forward [m/s]
-  double vy = 0.0;  ///< left [m/s]
-  double wz = 0.0;  ///< counter-clockwise [rad/s]
-};
-
-/// start_T_end for a frame moving with a constant body twist for dt [s]: the exact
-/// arc (SE(2) exponential), not a straight-line step.
-Pose2 integrate_twist(const BodyTwist& twist, double dt);
 
 /// laser_then_T_laser_now after dt [s] for a laser mounted at robot_T_laser on a robot
 /// with body twist robot_twist.

@@ -2,7 +2,7 @@
 // Incremental wheel encoders as a motor controller reports them: cumulative
 // counts quantised to whole ticks, held in int32 and wrapping around.
 
-#include "mecanum_odometry/mecanum_kinematics.hpp"
+#include "common/mecanum_kinematics.hpp"
 
 #include <array>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #include "robot_sim/mecanum_plant.hpp"
 
-#include "mecanum_odometry/exact_arc.hpp"
+#include "common/se2.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -65,7 +65,7 @@ void MecanumPlant::step(double dt) {
     const double speed = std::hypot(body_twist_.vx, body_twist_.vy);
     body_twist_.vy += config_.slip.lateral_noise_per_speed * speed * unit_normal_(rng_);
   }
-  map_T_robot_ = map_T_robot_ * exp_twist(body_twist_, dt);
+  map_T_robot_ = map_T_robot_ * se2_exp(body_twist_, dt);
 }
 
 }  // namespace refloc

@@ -10,9 +10,9 @@
 // Speed and acceleration limits scale all four wheels together, so a limited
 // command keeps its direction.
 
+#include "common/mecanum_kinematics.hpp"
 #include "common/robot_config.hpp"
 #include "common/se2.hpp"
-#include "mecanum_odometry/mecanum_kinematics.hpp"
 
 #include <array>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "mecanum_odometry/mecanum_kinematics.hpp"
+#include "common/mecanum_kinematics.hpp"
 
 #include <gtest/gtest.h>
 

@@ -17,29 +17,6 @@ std::vector<Pose2> random_poses(size_t n) {
   return poses;
 }
 
-TEST(WrapAngle, MapsIntoHalfOpenInterval) {
-  EXPECT_DOUBLE_EQ(wrap_angle(M_PI), M_PI);
-  EXPECT_DOUBLE_EQ(wrap_angle(-M_PI), M_PI);
-  EXPECT_NEAR(wrap_angle(3 * M_PI / 2), -M_PI / 2, 1e-12);
-  EXPECT_NEAR(wrap_angle(-7.0), -7.0 + 2 * M_PI, 1e-12);
-  for (double a = -20.0; a < 20.0; a += 0.01) {
-    const double w = wrap_angle(a);
-    EXPECT_GT(w, -M_PI);
-    EXPECT_LE(w, M_PI);
-    EXPECT_NEAR(std::sin(w), std::sin(a), 1e-9);
-    EXPECT_NEAR(std::cos(w), std::cos(a), 1e-9);
-  }
-}
-
-TEST(CircularMean, AveragesAcrossTheWrap) {
-  // The arithmetic mean of 179 deg and -179 deg is 0; the circular mean is 180 deg.
-  const double deg = M_PI / 180.0;
-  EXPECT_NEAR(std::abs(circular_mean({179 * deg, -179 * deg})), M_PI, 1e-12);
-  EXPECT_NEAR(circular_mean({10 * deg, 20 * deg, 30 * deg}), 20 * deg, 1e-12);
-  EXPECT_NEAR(circular_mean({0.0, M_PI / 2}, {3.0, 1.0}), std::atan2(1.0, 3.0), 1e-12);
-  EXPECT_EQ(circular_mean(std::vector<double>{}), 0.0);
-}
-
 TEST(Pose2, ComposeWithInverseIsIdentity) {
   for (const Pose2 &a : random_poses(200)) {
     EXPECT_TRUE(approx_equal(a * a.inverse(), Pose2{}, 1e-9, 1e-12));

@@ -4,8 +4,8 @@
 #include "pose_fusion/odometry_silence.hpp"
 #include "pose_fusion/pose_fusion.hpp"
 
-#include "mecanum_odometry/exact_arc.hpp"
-#include "mecanum_odometry/odometry_covariance.hpp"
+#include "common/odometry_noise.hpp"
+#include "common/se2.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +20,7 @@ constexpr int64_t kScanPeriod = 20'000;  // 50 Hz
 const BodyTwist kTwist{0.8, 0.2, 0.3};
 
 Pose2 truth_at(int64_t utime) {
-  return Pose2{3.0, 2.0, 0.5} * exp_twist(kTwist, 1e-6 * static_cast<double>(utime - kT0));
+  return Pose2{3.0, 2.0, 0.5} * se2_exp(kTwist, 1e-6 * static_cast<double>(utime - kT0));
 }
 
 Eigen::Matrix3d fix_covariance() { return Eigen::Vector3d(2.5e-5, 2.5e-5, 1e-5).asDiagonal(); }

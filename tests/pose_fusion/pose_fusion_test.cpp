@@ -1,7 +1,7 @@
 #include "pose_fusion/pose_fusion.hpp"
 
-#include "mecanum_odometry/exact_arc.hpp"
-#include "mecanum_odometry/odometry_covariance.hpp"
+#include "common/odometry_noise.hpp"
+#include "common/se2.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ const BodyTwist kTwist{0.5, 0.1, 0.3};
 
 Eigen::Matrix3d fix_covariance() { return Eigen::Vector3d(1e-4, 1e-4, 1e-4).asDiagonal(); }
 
-Pose2 odometry_delta(double dt) { return exp_twist(kTwist, dt); }
+Pose2 odometry_delta(double dt) { return se2_exp(kTwist, dt); }
 Eigen::Matrix3d odometry_q(double dt) { return increment_covariance(odometry_delta(dt), OdometryNoise{}); }
 
 // Odometry steps k = first..last, ending at kT0 + k * kPeriod.
@@ -31,7 +31,7 @@ PoseFix fix_at(int64_t utime, const Pose2& pose, FixQuality quality = FixQuality
 }
 
 // The truth drives a constant twist from the origin at kT0; a fix slightly off it.
-Pose2 truth_at(int64_t utime) { return exp_twist(kTwist, 1e-6 * static_cast<double>(utime - kT0)); }
+Pose2 truth_at(int64_t utime) { return se2_exp(kTwist, 1e-6 * static_cast<double>(utime - kT0)); }
 Pose2 biased_fix_pose(int64_t utime) { return truth_at(utime) * Pose2{0.02, -0.01, 0.01}; }
 
 void expect_same(const PoseEstimate& a, const PoseEstimate& b, double tol) {

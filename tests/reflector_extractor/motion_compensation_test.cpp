@@ -45,13 +45,13 @@ TEST(MotionCompensation, PureRotationRotatesCentreAndCovariance) {
   EXPECT_NEAR(detections[0].covariance(0, 1), (4e-4 - 1e-4) * std::sin(0.01) * std::cos(0.01), 1e-15);
 }
 
-TEST(MotionCompensation, IntegrateTwistFollowsTheExactArc) {
+TEST(MotionCompensation, LaserMotionFollowsTheExactArc) {
   // A quarter circle of radius 2 m: v = 1 m/s, w = 0.5 rad/s for pi seconds.
-  const Pose2 end = integrate_twist(BodyTwist{1.0, 0.0, 0.5}, M_PI);
+  const Pose2 end = laser_motion(BodyTwist{1.0, 0.0, 0.5}, Pose2{}, M_PI);
   EXPECT_NEAR(end.x, 2.0, 1e-12);
   EXPECT_NEAR(end.y, 2.0, 1e-12);
   EXPECT_NEAR(end.theta, M_PI / 2, 1e-12);
-  const Pose2 tiny = integrate_twist(BodyTwist{1.0, 0.0, 1e-9}, 1.0);
+  const Pose2 tiny = laser_motion(BodyTwist{1.0, 0.0, 1e-9}, Pose2{}, 1.0);
   EXPECT_NEAR(tiny.x, 1.0, 1e-12);
   EXPECT_NEAR(tiny.y, 0.5e-9, 1e-15);
 }

@@ -18,6 +18,6 @@ trap cleanup EXIT
 echo '{"initial_pose": {"x_m": 0.0, "y_m": 0.0, "theta_rad": 0.0}, "encoder_start_ticks": 2147470000}' > "$tmp/sim.json"
 "$bin/robot_sim" --robot "$config/robot.json" --config "$tmp/sim.json" --no-laser & pids+=($!)
 "$bin/mecanum_odometry" --robot "$config/robot.json" --config "$config/mecanum_odometry.json" & pids+=($!)
-"$bin/pose_fusion" --config "$config/pose_fusion.json" & pids+=($!)
+"$bin/pose_fusion" --robot "$config/robot.json" --config "$config/pose_fusion.json" & pids+=($!)
 "$bin/navigator" --config "$config/navigator.json" & pids+=($!)
 "$bin/motion_loop_harness"

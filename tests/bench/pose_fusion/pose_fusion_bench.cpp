@@ -1,8 +1,8 @@
 // Cost of the delayed-fix fusion: one odometry step, and one fix arriving
 // delay_ms late (rolling back and re-applying delay_ms of 100 Hz odometry).
 
-#include "mecanum_odometry/exact_arc.hpp"
-#include "mecanum_odometry/odometry_covariance.hpp"
+#include "common/odometry_noise.hpp"
+#include "common/se2.hpp"
 #include "pose_fusion/pose_fusion.hpp"
 
 #include <benchmark/benchmark.h>
@@ -15,7 +15,7 @@ constexpr int64_t kPeriod = 10'000;
 void BM_OdometryStep(benchmark::State& state) {
   PoseFusion fusion{FusionConfig{}};
   fusion.add_fix({kPeriod, Pose2{}, Eigen::Matrix3d::Identity() * 1e-4, FixQuality::kGood});
-  const Pose2 delta = exp_twist({0.5, 0.1, 0.3}, 0.01);
+  const Pose2 delta = se2_exp({0.5, 0.1, 0.3}, 0.01);
   const Eigen::Matrix3d q = increment_covariance(delta, OdometryNoise{});
   int64_t t = kPeriod;
   for (auto _ : state) {
@@ -29,7 +29,7 @@ void BM_DelayedFix(benchmark::State& state) {
   const int64_t delay_us = state.range(0) * 1000;
   PoseFusion fusion{FusionConfig{}};
   fusion.add_fix({kPeriod, Pose2{}, Eigen::Matrix3d::Identity() * 1e-4, FixQuality::kGood});
-  const Pose2 delta = exp_twist({0.5, 0.1, 0.3}, 0.01);
+  const Pose2 delta = se2_exp({0.5, 0.1, 0.3}, 0.01);
   const Eigen::Matrix3d q = increment_covariance(delta, OdometryNoise{});
   int64_t t = kPeriod;
   for (int i = 0; i < 200; ++i) fusion.add_odometry(t += kPeriod, delta, q);
