@@ -5,7 +5,7 @@
 # section per entry with the list's priority.
 #   services_list_check.sh REPO_ROOT
 set -euo pipefail
-repo="$1"
+repo="$(cd "$1" && pwd)"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 list="$repo/deploy/services.list"
 refloc="$repo/deploy/refloc"

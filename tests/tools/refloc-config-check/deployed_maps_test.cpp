@@ -1,0 +1,63 @@
+// refloc-config-check over the maps we ship: every deploy/config/map_*.json passes, and
+// one broken file among good ones stops the run with exit 2 naming that file.
+
+#include "tests/tools/run_command.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace refloc {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::string kTool = std::string(REFLOC_BINARY_DIR) + "/bin/refloc-config-check";
+
+std::vector<std::string> deployed_maps() {
+  std::vector<std::string> maps;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(REFLOC_SOURCE_DIR) + "/deploy/config")) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("map_", 0) == 0 && entry.path().extension() == ".json")
+      maps.push_back(entry.path().string());
+  }
+  std::sort(maps.begin(), maps.end());
+  return maps;
+}
+
+TEST(ConfigCheckTool, EveryDeployedMapIsValid) {
+  const auto maps = deployed_maps();
+  ASSERT_GE(maps.size(), 3u) << "map_demo, map_paper_cell, map_symmetric";
+  std::string command = kTool;
+  for (const auto& m : maps) command += " --map " + m;
+  const auto r = testing::run_command(command);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  for (const auto& m : maps) EXPECT_THAT(r.output, HasSubstr(m + ": ok, ")) << r.output;
+}
+
+TEST(ConfigCheckTool, ABrokenMapAmongGoodOnesExitsTwoNamingIt) {
+  const std::string bad = ::testing::TempDir() + "/broken_map.json";
+  std::ofstream(bad) << R"({"reflectors": [{"id": 1, "x": 0, "y": 0}, {"id": 1, "x": 4, "y": 0}]})";
+  const auto maps = deployed_maps();
+  ASSERT_FALSE(maps.empty());
+  const auto r = testing::run_command(kTool + " --map " + maps.front() + " --map " + bad);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr(maps.front() + ": ok, "));
+  EXPECT_THAT(r.output, HasSubstr(bad + ": "));
+}
+
+TEST(ConfigCheckTool, NoMapIsAUsageError) {
+  const auto r = testing::run_command(kTool);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.exit_code, 2) << "exit 2 is reserved for invalid files: " << r.output;
+  EXPECT_THAT(r.output, HasSubstr("--map"));
+}
+
+}  // namespace
+}  // namespace refloc
