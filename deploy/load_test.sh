@@ -10,8 +10,11 @@
 #   - per service: CPU% (utime+stime over the run from /proc/<pid>/stat; 100% =
 #     one core), RSS mean/end and peak (VmRSS, VmHWM), HEARTBEAT handler p99
 #     (worst window), decode errors, restarts.
+# The verdict is refloc-log --load-test's (tools/refloc-log/load_verdict.hpp), over the
+# LCM log and the samples this script writes (load_samples.txt in the run dir).
 # Exit status: 0 pass; 1 a scan was dropped, p99 > --max-p99-ms, a service is
-# missing from the report or restarted; 2 the stack did not come up; 64 usage.
+# missing from the report or restarted; 2 the stack did not come up (or refloc-log
+# could not read its input); 64 usage.
 #
 #   deploy/load_test.sh [--duration S] [--build-dir DIR] [--json FILE] [--run-dir DIR]
 #                       [--max-p99-ms MS] [--warmup-timeout S] [--mission FILE]
@@ -44,7 +47,7 @@ while [ $# -gt 0 ]; do
     --max-p99-ms) max_p99_ms="$2"; shift 2 ;;
     --warmup-timeout) warmup_timeout="$2"; shift 2 ;;
     --mission) mission="$2"; shift 2 ;;
-    -h|--help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "load_test: unknown argument '$1' (see --help)" >&2; exit 64 ;;
   esac
 done
@@ -201,72 +204,28 @@ trap - EXIT
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 log="$(ls "$run_dir"/refloc.* | head -1)"
+# What the log cannot tell, for refloc-log's verdict (format: tools/refloc-log/load_test_samples.hpp).
+samples_file="$run_dir/load_samples.txt"
+{
+  echo "# deploy/load_test.sh /proc samples, $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  echo "duration_s $duration"
+  echo "measured_s $(awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f", b - a }')"
+  echo "cores $(nproc)"
+  echo "clock_ticks_per_s $(getconf CLK_TCK)"
+  echo "max_p99_ms $max_p99_ms"
+  echo "build $REFLOC_BUILD"
+  echo "log $log"
+  echo "load_average_before $load_before"
+  echo "load_average_after $load_after"
+  for p in "${programs[@]}"; do
+    echo "process $p ${cpu_ticks[$p]} ${samples[$p]} ${rss_sum[$p]} ${rss_end[$p]} ${hwm[$p]} ${pid_changes[$p]}"
+  done
+} >"$samples_file"
 echo "== analysing $log"
-"$REFLOC_BUILD/bin/refloc-log" "$log" --latency --scans --json >"$run_dir/refloc-log.json"
-
-# One JSON document: run, scans, latency, services.
-ticks_per_s="$(getconf CLK_TCK)"
-procs="{}"
-for p in "${programs[@]}"; do
-  procs="$(jq -c --arg p "$p" --argjson ticks "${cpu_ticks[$p]}" --argjson n "${samples[$p]}" \
-    --argjson rss_sum "${rss_sum[$p]}" --argjson rss_end "${rss_end[$p]}" --argjson hwm "${hwm[$p]}" \
-    --argjson restarts "${pid_changes[$p]}" --argjson hz "$ticks_per_s" --argjson t0 "$t0" --argjson t1 "$t1" \
-    '.[$p] = {cpu_percent: ($ticks / $hz / ($t1 - $t0) * 100), rss_mean_mb: (if $n > 0 then $rss_sum / $n / 1024 else null end),
-              rss_end_mb: ($rss_end / 1024), rss_peak_mb: ($hwm / 1024), samples: $n, pid_restarts: $restarts}' <<<"$procs")"
-done
-report="$(jq --argjson procs "$procs" --argjson duration "$duration" --argjson t0 "$t0" --argjson t1 "$t1" \
-  --arg load_before "$load_before" --arg load_after "$load_after" --argjson cores "$(nproc)" \
-  --argjson max_p99 "$max_p99_ms" --arg build "$REFLOC_BUILD" --arg log "$log" '
-  . as $l
-  | ($l.scans.services | map({key: .service, value: .}) | from_entries) as $hb
-  | {
-      run: {duration_s: $duration, measured_s: ($t1 - $t0), cores: $cores, build: $build, log: $log,
-            load_average_before: $load_before, load_average_after: $load_after},
-      scans: {published: $l.scans.scans, expected_50hz: (50 * $duration),
-              expected_50hz_over_log: (50 * $l.scans.duration_s + 1 | round), log_duration_s: $l.scans.duration_s,
-              expected_from_counter: $l.scans.expected,
-              rate_hz: $l.scans.rate_hz, missing_counters: $l.scans.missing, counter_gaps: $l.scans.gap_count,
-              duplicates: $l.scans.duplicates, out_of_order: $l.scans.out_of_order,
-              unlogged_but_processed: $l.scans.unlogged_but_processed, gaps: $l.scans.gaps,
-              stages: $l.scans.stages, dropped: $l.scans.dropped},
-      latency_ms: $l.latency.end_to_end,
-      latency_stages_ms: $l.latency.stages,
-      services: [$procs | to_entries[] | .key as $name | .value + {
-        service: $name,
-        heartbeat_p99_us: ($hb[$name].processing_p99_us // null),
-        heartbeat_max_p99_us: ($hb[$name].max_processing_p99_us // null),
-        messages_in_logged: ($hb[$name].messages_in_logged // null),
-        messages_out_logged: ($hb[$name].messages_out_logged // null),
-        decode_errors: ($hb[$name].decode_errors // null),
-        heartbeat_restarts: ($hb[$name].restarts // null),
-        counters: ($hb[$name].counters // null)}]
-    }
-  | .checks = {
-      no_dropped_scan: (.scans.dropped == 0),
-      latency_p99_within_limit: ($max_p99 <= 0 or .latency_ms.p99_ms <= $max_p99),
-      every_service_reported: ([.services[] | select(.service != "lcm-logger" and .heartbeat_p99_us == null)] | length == 0),
-      no_restart: ([.services[] | select(.pid_restarts > 0 or (.heartbeat_restarts // 0) > 0)] | length == 0)
-    }
-  | .checks.max_p99_ms = $max_p99
-  | .pass = (.checks.no_dropped_scan and .checks.latency_p99_within_limit and .checks.every_service_reported and .checks.no_restart)
-  ' "$run_dir/refloc-log.json")"
-echo "$report" >"$run_dir/load_test.json"
-[ -n "$json" ] && echo "$report" >"$json"
-
-jq -r '
-  "== load test result (\(.run.measured_s | floor) s measured, \(.run.cores) cores, load average \(.run.load_average_before) before, \(.run.load_average_after) after)",
-  "scans: published \(.scans.published) in \(.scans.log_duration_s * 10 | round / 10) s of log (\(.scans.rate_hz * 100 | round / 100) Hz), expected \(.scans.expected_50hz_over_log) at 50 Hz over the log (\(.scans.expected_50hz) over the nominal \(.run.duration_s) s); counter span \(.scans.expected_from_counter), missing \(.scans.missing_counters) in \(.scans.counter_gaps) gaps, duplicates \(.scans.duplicates)",
-  (.scans.stages[] | "  \(.channel): \(.messages) messages, scans reached \(.scans_reached), without it \(.scans_missing)"),
-  "dropped scans: \(.scans.dropped) (missing counters that no later stage saw either, plus scans without a LASER_POSE; \(.scans.unlogged_but_processed) scans only the logger missed)",
-  "scan-to-LASER_POSE latency [ms]: p50 \(.latency_ms.p50_ms * 1000 | round / 1000)  p99 \(.latency_ms.p99_ms * 1000 | round / 1000)  max \(.latency_ms.max_ms * 1000 | round / 1000)  (\(.latency_ms.count) scans; p99 limit \(if .checks.max_p99_ms > 0 then "\(.checks.max_p99_ms) ms" else "none" end))"
-' <<<"$report"
-jq -r '
-  (["SERVICE", "CPU%", "RSS_MB", "PEAK_MB", "HB_P99_US", "HB_MAXP99", "IN_LOGGED", "OUT_LOGGED", "DECERR", "RESTARTS"] | @tsv),
-  (.services[] | [.service, (.cpu_percent * 10 | round / 10), ((.rss_mean_mb // 0) * 10 | round / 10),
-    (.rss_peak_mb * 10 | round / 10), (.heartbeat_p99_us // "-" | if type == "number" then round else . end),
-    (.heartbeat_max_p99_us // "-" | if type == "number" then round else . end), (.messages_in_logged // "-"),
-    (.messages_out_logged // "-"), (.decode_errors // "-"), (.pid_restarts + (.heartbeat_restarts // 0))] | @tsv)
-' <<<"$report" | column -t -s $'\t'
-jq -r '"checks: \(.checks | to_entries | map("\(.key)=\(.value)") | join(" "))", (if .pass then "PASS" else "FAIL" end)' <<<"$report"
+set +e
+"$REFLOC_BUILD/bin/refloc-log" "$log" --load-test "$samples_file" --report "$run_dir/load_test.json"
+rc=$?
+set -e
+[ -z "$json" ] || cp "$run_dir/load_test.json" "$json"
 echo "== report: $run_dir/load_test.json"
-jq -e .pass >/dev/null <<<"$report"
+exit $rc

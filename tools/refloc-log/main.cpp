@@ -1,14 +1,40 @@
 // refloc-log: what is in an LCM log (per-channel counts, rates, gaps), export
-// of chosen channels to CSV or JSON lines, and the scan-to-pose latency of the
-// pipeline. Reads the log with LCM's own reader.
+// of chosen channels to CSV or JSON lines, the scan-to-pose latency of the
+// pipeline, and the load test's verdict. Reads the log with LCM's own reader.
 
 #include "common/guarded_main.hpp"
+#include "common/json_config.hpp"
+#include "load_verdict.hpp"
 #include "log_analysis.hpp"
 #include "log_report.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <fstream>
+
+namespace {
+
+/// --load-test: the verdict over the log and the run's samples; exit 0 pass, 1 fail.
+int report_load_test(const refloc::LogAnalysis& analysis, const std::string& samples_path,
+                     const std::string& report_path, bool json) {
+  const refloc::LoadSamples samples = refloc::load_load_samples(samples_path);
+  const refloc::LoadChecks checks = refloc::judge_load_test(samples, *analysis.scans, *analysis.latency);
+  const auto doc = refloc::load_test_report_to_json(samples, *analysis.scans, *analysis.latency, checks);
+  if (!report_path.empty()) {
+    std::ofstream out(report_path);
+    if (!(out << doc.dump(2) << "\n")) throw refloc::ConfigError(report_path + ": cannot write");
+  }
+  if (json) {
+    std::printf("%s\n", doc.dump(2).c_str());
+  } else {
+    std::printf("%s",
+                refloc::format_load_test_report(samples, *analysis.scans, *analysis.latency, checks).c_str());
+  }
+  return checks.pass() ? 0 : 1;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Summarize an LCM log, export channels to CSV/JSON lines, measure scan-to-pose latency"};
@@ -39,11 +65,18 @@ int main(int argc, char** argv) {
       "dropped scans: LMS100_SCAN counter gaps, scans reaching REFLECTORS/REFLECTOR_MATCHES/LASER_POSE, "
       "and every service's HEARTBEAT health (decode errors, worst handler p99, restarts)");
   app.add_flag("--json", json, "print the summary (and latency) as one JSON document");
+  std::string load_samples, load_report;
+  app.add_option("--load-test", load_samples,
+                 "judge a load test: this file holds deploy/load_test.sh's /proc samples; implies --latency "
+                 "--scans; prints the report (JSON with --json), exit 0 pass, 1 fail");
+  app.add_option("--report", load_report, "with --load-test: also write the JSON report to this file");
   CLI11_PARSE(app, argc, argv);
+  if (!load_samples.empty()) options.latency = options.scans = true;
 
   return refloc::guarded_main("refloc-log", [&] {
     const refloc::MessageDecoder decoder;
     const auto analysis = refloc::analyze_log(log_path, options, decoder);
+    if (!load_samples.empty()) return report_load_test(analysis, load_samples, load_report, json);
     const auto exported = refloc::export_log(log_path, analysis.summary, request, decoder);
     if (json) {
       nlohmann::ordered_json doc = refloc::log_summary_to_json(analysis.summary);
