@@ -1,0 +1,55 @@
+#include "mission_summary.hpp"
+
+#include "common/json_config.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+namespace refloc {
+
+std::string format_goal_sent(const GoalRequest& goal, size_t nwaypoints) {
+  if (!goal.resend) return fmt::format("sent mission {}\n", goal.goal_id);
+  return fmt::format("resending waypoints {}..{} as goal {} (navigator restarted or silent)\n",
+                     goal.first_waypoint, nwaypoints - 1, goal.goal_id);
+}
+
+std::string format_waypoint_reached(size_t index, const WaypointResult& result) {
+  return fmt::format("waypoint {} reached: true error {:.1f} mm, {:.2f} deg\n", index,
+                     result.error_xy_m * 1000.0, result.error_heading_rad * 180.0 / M_PI);
+}
+
+std::string format_mission_summary(const nlohmann::json& report) {
+  std::string out = fmt::format("\nwaypoints reached: {}/{}\n", report["waypoints_reached"].get<size_t>(),
+                                report["waypoints_total"].get<size_t>());
+  out += fmt::format("max true waypoint error: {:.1f} mm, {:.2f} deg\n",
+                     report["max_waypoint_error_mm"].get<double>(),
+                     report["max_waypoint_heading_error_deg"].get<double>());
+  out += fmt::format("POSE RMSE vs GROUND_TRUTH: {:.1f} mm over {} samples\n",
+                     report["pose_rmse_mm"].get<double>(), report["pose_samples"].get<size_t>());
+  out += fmt::format("LASER_POSE RMSE vs GROUND_TRUTH: {:.1f} mm over {} fixes\n",
+                     report["laser_pose_rmse_mm"].get<double>(), report["laser_pose_samples"].get<size_t>());
+  out += fmt::format("odometry-only drift over the run: {:.1f} mm{}\n",
+                     report["odometry_drift_mm"].get<double>(),
+                     report["odometry_restarts"].get<int>() > 0 ? " (since the last odometry restart)" : "");
+  if (report["aborted"].get<bool>())
+    out += fmt::format("ABORTED: {}\n", report["abort_reason"].get<std::string>());
+  return out;
+}
+
+std::string write_mission_results(const MissionMonitor& monitor, const MissionFiles& files) {
+  const nlohmann::json report = monitor.report(files.log_file);
+  std::string out = format_mission_summary(report);
+  if (!files.json_file.empty()) {
+    std::ofstream json(files.json_file);
+    if (!(json << report.dump(2) << "\n")) throw ConfigError(files.json_file + ": cannot write");
+  }
+  const std::string plot = !files.plot_file.empty() ? files.plot_file
+                           : files.log_file.empty() ? ""
+                                                    : files.log_file + ".svg";
+  if (plot.empty()) return out;
+  write_path_plot_svg(plot, "refloc mission: true vs estimated path", monitor.plot_series());
+  return out + fmt::format("path plot: {}\n", plot);
+}
+
+}  // namespace refloc
