@@ -9,7 +9,8 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libfmt-dev libspdlog-dev libcli11-dev libsystemd-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   default-jdk-headless libjchart2d-java
-  supervisor iproute2 util-linux procps python3
+  supervisor iproute2 util-linux procps python3 jq
+  clang-format git
 )
 
 missing=()

@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# Set up and run every test: install Debian dependencies if missing, build with
-# warnings as errors and AddressSanitizer/UBSan, run ctest.
+# Set up and run every test: install Debian dependencies if missing, check that
+# every C++ file is clang-formatted (the repo's .clang-format), build with warnings
+# as errors and AddressSanitizer/UBSan, run ctest.
 #   deploy/test.sh [extra ctest args]      (BUILD_DIR defaults to build-test)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 deploy/install-deps.sh
+# Formatting first: a minute's build is not spent on a tree CI rejects anyway
+# (the same check runs as ctest structure_format).
+tests/structure/structure_check.py . format
 build_dir="${BUILD_DIR:-build-test}"
 jobs="${JOBS:-$(nproc)}"
 # Benchmarks are not run by ctest and their numbers mean nothing under sanitizers:
