@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # deploy/services.list is the one list of programs: it parses, is in priority order,
 # names every service with a main.cpp (and only those), marks robot_json exactly the
-# services that take --robot, and deploy/refloc writes one supervisord [program:*]
-# section per entry with the list's priority.
+# services that take --robot, matches refloc-status's default --expect, and deploy/refloc
+# writes one supervisord [program:*] section per entry with the list's priority.
 #   services_list_check.sh REPO_ROOT
 set -euo pipefail
 repo="$(cd "$1" && pwd)"
@@ -39,6 +39,13 @@ for s in "${services[@]}"; do
   [ "$listed" = "$takes" ] ||
     fail "$list: $s robot_json=$listed, but its main.cpp $([ $takes = yes ] && echo takes || echo "does not take") --robot"
 done
+
+# refloc-status expects every service by default: the same set as the list.
+status_default="$(awk '/std::vector<std::string> expected\{/ {on = 1} on {print} on && /\};/ {exit}' \
+  "$repo/tools/refloc-status/main.cpp" | grep -o '"[a-z_0-9-]*"' | tr -d '"' | sort | tr '\n' ' ')"
+listed_services="$(printf '%s\n' "${services[@]}" | sort | tr '\n' ' ')"
+[ "$status_default" = "$listed_services" ] ||
+  fail "refloc-status's default --expect ($status_default) is not the list's services ($listed_services)"
 
 conf="$("$refloc" supervisor-conf)"
 for p in "${programs[@]}"; do
