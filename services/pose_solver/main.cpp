@@ -1,8 +1,9 @@
 // pose_solver: REFLECTOR_MATCHES (reflector_matches_t) -> LASER_POSE (pose2d_t,
-// map_T_robot at the scan's reference time), one output per scan.
+// map_T_robot at the scan's reference time), one output per scan. The fix and its
+// status are SolverNode's (make_laser_fix); this file converts.
 
-#include "pose_solver/pose_solver.hpp"
 #include "pose_solver/solver_config_file.hpp"
+#include "pose_solver/solver_node.hpp"
 
 #include "common/json_config.hpp"
 #include "common/lcm_conversions.hpp"
@@ -16,16 +17,22 @@
 namespace refloc {
 namespace {
 
-int8_t to_message_status(SolveStatus s) {
-  switch (s) {
-    case SolveStatus::kOk:
-      return pose2d_t::STATUS_OK;
-    case SolveStatus::kDegraded:
-      return pose2d_t::STATUS_DEGRADED;
-    case SolveStatus::kLost:
-      break;
-  }
-  return pose2d_t::STATUS_LOST;
+MatchVerdict from_message_status(int8_t s) {
+  if (s == reflector_matches_t::STATUS_OK) return MatchVerdict::kOk;
+  return s == reflector_matches_t::STATUS_AMBIGUOUS ? MatchVerdict::kAmbiguous : MatchVerdict::kLost;
+}
+
+void to_message(const LaserFix& fix, pose2d_t& out) {
+  constexpr int8_t kStatus[] = {pose2d_t::STATUS_OK, pose2d_t::STATUS_DEGRADED, pose2d_t::STATUS_LOST,
+                                pose2d_t::STATUS_AMBIGUOUS};  // in LaserFixStatus order
+  out.utime = fix.utime;
+  out.status = kStatus[static_cast<int>(fix.status)];
+  out.x = fix.map_T_robot.x;
+  out.y = fix.map_T_robot.y;
+  out.theta = fix.map_T_robot.theta;
+  covariance_to_lcm(fix.covariance, out.covariance);
+  out.reflectors_used = fix.reflectors_used;
+  out.residual = fix.residual;
 }
 
 int run(const std::string& lcm_url, const std::string& config_path, const std::string& robot_path) {
@@ -36,7 +43,7 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     file.reject_unknown_keys();
   }
   const Pose2 robot_T_laser = load_robot_config(robot_path).robot_T_laser;
-  PoseSolver solver(config.solver, robot_T_laser);
+  SolverNode node(config.solver, robot_T_laser);
   spdlog::info("mode {}, laser mount ({:.3f} m, {:.3f} m, {:.4f} rad)",
                config.solver.mode == SolverMode::kPaper ? "paper" : "default", robot_T_laser.x,
                robot_T_laser.y, robot_T_laser.theta);
@@ -44,9 +51,7 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   ServiceRuntime runtime("pose_solver", lcm_url);
   std::vector<ReflectorDetection> detections;
   std::vector<ReflectorMatch> matches;
-  PoseSolution solution;
   pose2d_t out{};
-
   runtime.subscribe<reflector_matches_t>(config.input_channel, [&](const reflector_matches_t& msg) {
     // Each match carries its detection: the solver sees them as detections 0..n-1.
     detections.clear();
@@ -55,40 +60,11 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
       matches.push_back({static_cast<int>(detections.size()), m.map_id, {m.map_x, m.map_y}, m.map_radius});
       detections.push_back(from_lcm(m.detection));
     }
-    out.utime = msg.utime;
-    if (msg.status == reflector_matches_t::STATUS_OK) {
-      solver.solve(detections, matches, solution);
-      out.status = to_message_status(solution.status);
-    } else {
-      // The matcher's doubt wins: a pose from an ambiguous association is not a fix.
-      solution.status = SolveStatus::kLost;
-      solution.reflectors_used = 0;
-      solution.rms_residual = 0.0;
-      out.status = msg.status == reflector_matches_t::STATUS_AMBIGUOUS ? pose2d_t::STATUS_AMBIGUOUS
-                                                                       : pose2d_t::STATUS_LOST;
-    }
-    const bool has_pose =
-        msg.status == reflector_matches_t::STATUS_OK && solution.status != SolveStatus::kLost;
-    out.x = has_pose ? solution.map_T_robot.x : 0.0;
-    out.y = has_pose ? solution.map_T_robot.y : 0.0;
-    out.theta = has_pose ? solution.map_T_robot.theta : 0.0;
-    // No fix: a covariance no consumer mistakes for information.
-    covariance_to_lcm(has_pose ? solution.covariance : Eigen::Matrix3d(Eigen::Matrix3d::Identity() * 1e6),
-                      out.covariance);
-    out.reflectors_used = has_pose ? solution.reflectors_used : 0;
-    out.residual = has_pose ? solution.rms_residual : 0.0;
-    if (out.status == pose2d_t::STATUS_OK) {
-      runtime.set_state(heartbeat_t::STATE_OK);
-    } else {
-      if (out.status == pose2d_t::STATUS_DEGRADED) ++runtime.counter("degraded_fixes");
-      if (out.status == pose2d_t::STATUS_LOST) ++runtime.counter("lost_fixes");
-      if (out.status == pose2d_t::STATUS_AMBIGUOUS) ++runtime.counter("ambiguous_fixes");
-      runtime.set_state(heartbeat_t::STATE_DEGRADED,
-                        has_pose ? "last fix DEGRADED" : "no fix from the last scan");
-    }
-    if (has_pose && solution.reflectors_used < static_cast<int>(matches.size())) {
-      runtime.counter("outlier_matches") += static_cast<int64_t>(matches.size()) - solution.reflectors_used;
-    }
+    const LaserFix& fix = node.on_matches(msg.utime, from_message_status(msg.status), detections, matches);
+    if (fix.ok()) runtime.set_state(heartbeat_t::STATE_OK);
+    if (!fix.ok()) runtime.set_state(heartbeat_t::STATE_DEGRADED, fix.degraded_detail());
+    fix.for_each_counter([&](const char* name, int64_t by) { runtime.counter(name) += by; });
+    to_message(fix, out);
     runtime.publish(config.output_channel, out);
   });
   return runtime.run();

@@ -1,0 +1,38 @@
+#include "pose_solver/laser_fix.hpp"
+
+namespace refloc {
+namespace {
+
+LaserFixStatus from_solution(SolveStatus s) {
+  switch (s) {
+    case SolveStatus::kOk:
+      return LaserFixStatus::kOk;
+    case SolveStatus::kDegraded:
+      return LaserFixStatus::kDegraded;
+    case SolveStatus::kLost:
+      break;
+  }
+  return LaserFixStatus::kLost;
+}
+
+}  // namespace
+
+LaserFix make_laser_fix(int64_t utime, MatchVerdict verdict, const PoseSolution& solution, int matches) {
+  LaserFix fix;
+  fix.utime = utime;
+  if (verdict != MatchVerdict::kOk) {
+    fix.status = verdict == MatchVerdict::kAmbiguous ? LaserFixStatus::kAmbiguous : LaserFixStatus::kLost;
+    return fix;
+  }
+  fix.status = from_solution(solution.status);
+  fix.has_pose = solution.status != SolveStatus::kLost;
+  if (!fix.has_pose) return fix;
+  fix.map_T_robot = solution.map_T_robot;
+  fix.covariance = solution.covariance;
+  fix.reflectors_used = solution.reflectors_used;
+  fix.residual = solution.rms_residual;
+  if (solution.reflectors_used < matches) fix.outlier_matches = matches - solution.reflectors_used;
+  return fix;
+}
+
+}  // namespace refloc
