@@ -28,4 +28,12 @@ FusionServiceConfig parse_fusion_service_config(const JsonConfig& config) {
   return c;
 }
 
+FusionServiceConfig load_fusion_service_config(const std::string& path) {
+  if (path.empty()) return {};
+  const JsonConfig file = JsonConfig::load_file(path);
+  FusionServiceConfig config = parse_fusion_service_config(file);
+  file.reject_unknown_keys();
+  return config;
+}
+
 }  // namespace refloc

@@ -25,4 +25,7 @@ struct FusionServiceConfig {
 /// The whole file; call config.reject_unknown_keys() afterwards.
 FusionServiceConfig parse_fusion_service_config(const JsonConfig& config);
 
+/// Load, parse and reject unknown keys; "" gives the defaults.
+FusionServiceConfig load_fusion_service_config(const std::string& path);
+
 }  // namespace refloc
