@@ -1,14 +1,13 @@
 // mecanum_odometry: WHEEL_ENCODERS (wheel_encoders_t) -> ODOMETRY (odometry_t),
-// one output per encoder sample.
+// one output per encoder sample. Every decision is OdometryNode's.
 
 #include "common/clock.hpp"
-#include "common/json_config.hpp"
 #include "common/lcm_conversions.hpp"
+#include "common/node_event_report.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
-#include "mecanum_odometry/mecanum_odometry.hpp"
-#include "mecanum_odometry/odometry_config_file.hpp"
+#include "mecanum_odometry/odometry_node.hpp"
 
 #include <refloc/odometry_t.hpp>
 #include <refloc/wheel_encoders_t.hpp>
@@ -33,47 +32,18 @@ odometry_t to_message(const OdometryEstimate& e) {
 
 int run(const std::string& lcm_url, const std::string& robot_path, const std::string& config_path) {
   const RobotConfig robot = load_robot_config(robot_path);
-  OdometryServiceConfig config;
-  if (!config_path.empty()) {
-    const JsonConfig file = JsonConfig::load_file(config_path);
-    config = parse_odometry_service_config(file);
-    file.reject_unknown_keys();
-  }
+  const OdometryServiceConfig config = load_odometry_service_config(config_path);
   ServiceRuntime runtime("mecanum_odometry", lcm_url);
-  MecanumOdometry odometry(robot, config.odometry);
-  int64_t last_sample_us = 0;
-
+  OdometryNode node(robot, config);
   runtime.subscribe<wheel_encoders_t>(config.input_channel, [&](const wheel_encoders_t& msg) {
-    last_sample_us = monotonic_us();
-    const std::array<int32_t, 4> ticks{msg.ticks[0], msg.ticks[1], msg.ticks[2], msg.ticks[3]};
-    switch (odometry.add_sample(msg.utime, ticks)) {
-      case EncoderSampleResult::kOutOfOrder:
-        ++runtime.counter("out_of_order_samples");
-        return;
-      case EncoderSampleResult::kGapRestart:
-        ++runtime.counter("gap_restarts");
-        spdlog::warn("{}: gap in encoder samples, integration restarted from the new counts",
-                     config.input_channel);
-        break;
-      case EncoderSampleResult::kImplausible:
-        ++runtime.counter("implausible_samples");
-        spdlog::warn("{}: wheel speed above {} rad/s, sample skipped", config.input_channel,
-                     config.odometry.max_plausible_wheel_speed);
-        break;
-      case EncoderSampleResult::kFirstSample:
-      case EncoderSampleResult::kIntegrated:
-        break;
-    }
-    if (odometry.estimate().slip_indicator > config.slip_warning) ++runtime.counter("slip_samples");
-    runtime.publish(config.output_channel, to_message(odometry.estimate()));
+    const EncoderReading reading{msg.utime, {msg.ticks[0], msg.ticks[1], msg.ticks[2], msg.ticks[3]}};
+    const OdometryEstimate* estimate = node.on_encoders(reading, monotonic_us());
+    report_events(runtime, node.events());
+    if (estimate != nullptr) runtime.publish(config.output_channel, to_message(*estimate));
   });
   runtime.add_periodic(0.5, [&] {
-    const bool fresh = last_sample_us > 0 && monotonic_us() - last_sample_us < 1'000'000;
-    if (fresh) {
-      runtime.set_state(heartbeat_t::STATE_OK);
-    } else {
-      runtime.set_state(heartbeat_t::STATE_DEGRADED, "no " + config.input_channel + " for 1 s");
-    }
+    const OdometryHealth health = node.health(monotonic_us());
+    runtime.set_state(health.ok ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED, health.detail);
   });
   return runtime.run();
 }

@@ -17,4 +17,12 @@ OdometryServiceConfig parse_odometry_service_config(const JsonConfig& config) {
   return c;
 }
 
+OdometryServiceConfig load_odometry_service_config(const std::string& path) {
+  if (path.empty()) return {};
+  const JsonConfig file = JsonConfig::load_file(path);
+  OdometryServiceConfig config = parse_odometry_service_config(file);
+  file.reject_unknown_keys();
+  return config;
+}
+
 }  // namespace refloc

@@ -20,4 +20,7 @@ struct OdometryServiceConfig {
 /// The whole file; call config.reject_unknown_keys() afterwards.
 OdometryServiceConfig parse_odometry_service_config(const JsonConfig& config);
 
+/// Load, parse and reject unknown keys; "" gives the defaults.
+OdometryServiceConfig load_odometry_service_config(const std::string& path);
+
 }  // namespace refloc

@@ -33,13 +33,13 @@ FusionNode::FusionNode(const FusionServiceConfig& config, const OdometryNoise& n
       continuity_(config.continuity),
       silence_(config.odometry_timeout) {}
 
-void FusionNode::event(const char* counter, FusionEvent::Level level, std::string log) {
+void FusionNode::event(const char* counter, NodeEvent::Level level, std::string log) {
   events_.push_back({counter, level, std::move(log)});
 }
 
 void FusionNode::count_fix_result(FixResult result) {
   if (result == FixResult::kRejectedGate) {
-    event(fix_result_counter(result), FusionEvent::Level::kDebug,
+    event(fix_result_counter(result), NodeEvent::Level::kDebug,
           fmt::format("fix rejected, Mahalanobis^2 {:.1f}", fusion_.last_mahalanobis_squared()));
   } else {
     event(fix_result_counter(result));
@@ -52,14 +52,14 @@ void FusionNode::apply_step(const OdometrySample& sample, const OdometryStep& st
       break;
     case OdometryStepKind::kBackwards:
       // A restarted odometry service on another clock: take the next step from here.
-      event("odometry_restarts", FusionEvent::Level::kWarn,
+      event("odometry_restarts", NodeEvent::Level::kWarn,
             fmt::format("ODOMETRY went back in time by {:.3f} s: new odometry frame", -step.gap));
       break;
     case OdometryStepKind::kContinuous:
       fusion_.add_odometry(sample.utime, step.delta, increment_covariance(step.delta, noise_));
       break;
     case OdometryStepKind::kSeam:
-      event(step.restarted ? "odometry_restarts" : "odometry_gaps", FusionEvent::Level::kWarn,
+      event(step.restarted ? "odometry_restarts" : "odometry_gaps", NodeEvent::Level::kWarn,
             fmt::format(
                 "ODOMETRY {} after {:.3f} s: motion meanwhile unobserved, waiting for a fix to re-anchor",
                 step.restarted ? "restarted" : "resumed", step.gap));
@@ -75,7 +75,7 @@ const FusedPose& FusionNode::on_odometry(const OdometrySample& sample, int64_t n
   for (const FixResult r : fusion_.deferred_results()) count_fix_result(r);
   const FusionStatus status = fusion_.status(sample.utime);
   if (status != published_status_) {
-    event(nullptr, FusionEvent::Level::kInfo,
+    event(nullptr, NodeEvent::Level::kInfo,
           fmt::format("status {} -> {}", to_string(published_status_), to_string(status)));
     published_status_ = status;
   }
@@ -105,7 +105,7 @@ std::optional<FusedPose> FusionNode::on_fix(const LaserFixInput& input, int64_t 
     reflectors_used_ = input.reflectors_used;
   if (result == FixResult::kInitialised) {
     const Pose2& p = input.map_T_robot;
-    event(nullptr, FusionEvent::Level::kInfo,
+    event(nullptr, NodeEvent::Level::kInfo,
           fmt::format("initialised from the fix at utime {}: ({:.3f}, {:.3f}, {:.4f})", input.utime, p.x, p.y,
                       p.theta));
   }

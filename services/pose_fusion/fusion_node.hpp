@@ -4,6 +4,7 @@
 // per new usable fix, as DEGRADED), with the heartbeat counters to bump, the log
 // lines to write and the heartbeat state. main.cpp only converts messages.
 
+#include "common/node_event.hpp"
 #include "common/odometry_noise.hpp"
 #include "pose_fusion/fusion_config_file.hpp"
 #include "pose_fusion/laser_fix_input.hpp"
@@ -27,14 +28,6 @@ struct FusedPose {
   int32_t reflectors_used = 0;  ///< of the latest accepted fix
 };
 
-/// Something a message did: a heartbeat counter to bump by one and/or a log line.
-struct FusionEvent {
-  enum class Level { kDebug, kInfo, kWarn };
-  const char* counter = nullptr;  ///< nullptr: no counter
-  Level level = Level::kDebug;
-  std::string log;  ///< empty: nothing to log
-};
-
 /// The HEARTBEAT state after an odometry message: OK only while the filter is OK.
 struct FusionHealth {
   bool ok = false;
@@ -56,7 +49,7 @@ class FusionNode {
   std::optional<FusedPose> on_fix(const LaserFixInput& input, int64_t now_mono_us);
 
   /// Counters and log lines of the last on_odometry / on_fix call.
-  const std::vector<FusionEvent>& events() const { return events_; }
+  const std::vector<NodeEvent>& events() const { return events_; }
   /// After the latest odometry message.
   FusionHealth health() const { return fusion_health(published_status_); }
   const PoseFusion& fusion() const { return fusion_; }
@@ -64,8 +57,7 @@ class FusionNode {
  private:
   void apply_step(const OdometrySample& sample, const OdometryStep& step);
   void count_fix_result(FixResult result);
-  void event(const char* counter, FusionEvent::Level level = FusionEvent::Level::kDebug,
-             std::string log = {});
+  void event(const char* counter, NodeEvent::Level level = NodeEvent::Level::kDebug, std::string log = {});
 
   OdometryNoise noise_;
   PoseFusion fusion_;
@@ -74,7 +66,7 @@ class FusionNode {
   int32_t reflectors_used_ = 0;
   FusionStatus published_status_ = FusionStatus::kInitializing;
   FusedPose pose_;
-  std::vector<FusionEvent> events_;
+  std::vector<NodeEvent> events_;
 };
 
 }  // namespace refloc

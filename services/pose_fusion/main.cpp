@@ -3,6 +3,7 @@
 
 #include "common/clock.hpp"
 #include "common/lcm_conversions.hpp"
+#include "common/node_event_report.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
@@ -54,17 +55,6 @@ pose2d_t to_message(const FusedPose& pose) {
   return out;
 }
 
-void report(ServiceRuntime& runtime, const std::vector<FusionEvent>& events) {
-  for (const FusionEvent& e : events) {
-    if (e.counter != nullptr) ++runtime.counter(e.counter);
-    if (e.log.empty()) continue;
-    const auto level = e.level == FusionEvent::Level::kWarn   ? spdlog::level::warn
-                       : e.level == FusionEvent::Level::kInfo ? spdlog::level::info
-                                                              : spdlog::level::debug;
-    spdlog::log(level, "{}", e.log);
-  }
-}
-
 int run(const std::string& lcm_url, const std::string& robot_path, const std::string& config_path) {
   const FusionServiceConfig config = load_fusion_service_config(config_path);
   ServiceRuntime runtime("pose_fusion", lcm_url);
@@ -72,7 +62,7 @@ int run(const std::string& lcm_url, const std::string& robot_path, const std::st
   runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
     const FusedPose& pose =
         node.on_odometry({msg.utime, {msg.x, msg.y, msg.theta}, msg.distance}, monotonic_us());
-    report(runtime, node.events());
+    report_events(runtime, node.events());
     runtime.publish(config.output_channel, to_message(pose));
     const FusionHealth health = node.health();
     runtime.set_state(health.ok ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED, health.detail);
@@ -80,7 +70,7 @@ int run(const std::string& lcm_url, const std::string& robot_path, const std::st
   runtime.subscribe<pose2d_t>(config.fix_channel, [&](const pose2d_t& msg) {
     const std::optional<FusedPose> pose = node.on_fix(from_message(msg), monotonic_us());
     if (pose) runtime.publish(config.output_channel, to_message(*pose));
-    report(runtime, node.events());
+    report_events(runtime, node.events());
   });
   return runtime.run();
 }

@@ -30,14 +30,14 @@ OdometrySample odometry_at(int k, double distance_per_step = 0.005) {
   return {kT0 + k * kPeriod, Pose2{distance_per_step * k, 0.0, 0.0}, distance_per_step * k};
 }
 
-int count(const std::vector<FusionEvent>& events, const std::string& counter) {
-  return static_cast<int>(std::count_if(events.begin(), events.end(), [&](const FusionEvent& e) {
+int count(const std::vector<NodeEvent>& events, const std::string& counter) {
+  return static_cast<int>(std::count_if(events.begin(), events.end(), [&](const NodeEvent& e) {
     return e.counter != nullptr && counter == e.counter;
   }));
 }
 
-bool logged(const std::vector<FusionEvent>& events, FusionEvent::Level level, const std::string& text) {
-  return std::any_of(events.begin(), events.end(), [&](const FusionEvent& e) {
+bool logged(const std::vector<NodeEvent>& events, NodeEvent::Level level, const std::string& text) {
+  return std::any_of(events.begin(), events.end(), [&](const NodeEvent& e) {
     return e.level == level && e.log.find(text) != std::string::npos;
   });
 }
@@ -79,15 +79,14 @@ TEST(FusionNode, GoodFixInitialisesThenPoseIsOkWithItsReflectorCount) {
   EXPECT_EQ(node.health().detail, "INITIALIZING");
   node.on_fix(fix_at(kT0, Pose2{1.0, 2.0, 0.5}), 1000);
   EXPECT_EQ(count(node.events(), "initialisations"), 1);
-  EXPECT_TRUE(
-      logged(node.events(), FusionEvent::Level::kInfo, "initialised from the fix at utime 100000000"));
+  EXPECT_TRUE(logged(node.events(), NodeEvent::Level::kInfo, "initialised from the fix at utime 100000000"));
   const FusedPose& pose = node.on_odometry(odometry_at(1), 10'000);
   EXPECT_EQ(pose.status, FusionStatus::kOk);
   EXPECT_EQ(pose.utime, kT0 + kPeriod);
   EXPECT_EQ(pose.reflectors_used, 5);
   EXPECT_NEAR(pose.map_T_robot.x, 1.0 + 0.005 * std::cos(0.5), 1e-9);
   EXPECT_NEAR(pose.map_T_robot.y, 2.0 + 0.005 * std::sin(0.5), 1e-9);
-  EXPECT_TRUE(logged(node.events(), FusionEvent::Level::kInfo, "status INITIALIZING -> OK"));
+  EXPECT_TRUE(logged(node.events(), NodeEvent::Level::kInfo, "status INITIALIZING -> OK"));
   EXPECT_TRUE(node.health().ok);
   EXPECT_EQ(node.health().detail, "");
 }
@@ -99,7 +98,7 @@ TEST(FusionNode, FixFarOffTheEstimateIsGatedAndCounted) {
   node.on_odometry(odometry_at(1), 10'000);
   node.on_fix(fix_at(kT0 + kPeriod, Pose2{1.0, 0.0, 0.0}), 11'000);
   EXPECT_EQ(count(node.events(), "fixes_rejected_gate"), 1);
-  EXPECT_TRUE(logged(node.events(), FusionEvent::Level::kDebug, "fix rejected, Mahalanobis^2"));
+  EXPECT_TRUE(logged(node.events(), NodeEvent::Level::kDebug, "fix rejected, Mahalanobis^2"));
 }
 
 TEST(FusionNode, SilentOdometryPublishesEachNewFixAsDegraded) {
@@ -128,7 +127,7 @@ TEST(FusionNode, OdometryGoingBackInTimeIsARestartWarning) {
   node.on_odometry(odometry_at(10), 0);
   node.on_odometry(odometry_at(5), 10'000);
   EXPECT_EQ(count(node.events(), "odometry_restarts"), 1);
-  EXPECT_TRUE(logged(node.events(), FusionEvent::Level::kWarn, "ODOMETRY went back in time by 0.050 s"));
+  EXPECT_TRUE(logged(node.events(), NodeEvent::Level::kWarn, "ODOMETRY went back in time by 0.050 s"));
 }
 
 TEST(FusionNode, OdometryGapAndRestartAreSeamsCountedSeparately) {
@@ -137,11 +136,11 @@ TEST(FusionNode, OdometryGapAndRestartAreSeamsCountedSeparately) {
   node.on_odometry(odometry_at(0), 0);
   node.on_odometry(odometry_at(200), 10'000);  // 2 s later in the same frame
   EXPECT_EQ(count(node.events(), "odometry_gaps"), 1);
-  EXPECT_TRUE(logged(node.events(), FusionEvent::Level::kWarn, "ODOMETRY resumed after 2.000 s"));
+  EXPECT_TRUE(logged(node.events(), NodeEvent::Level::kWarn, "ODOMETRY resumed after 2.000 s"));
   EXPECT_EQ(node.on_odometry(odometry_at(201), 20'000).status, FusionStatus::kDegraded);
   node.on_odometry({kT0 + 202 * kPeriod, Pose2{}, 0.0}, 30'000);  // distance back to 0: a new frame
   EXPECT_EQ(count(node.events(), "odometry_restarts"), 1);
-  EXPECT_TRUE(logged(node.events(), FusionEvent::Level::kWarn, "ODOMETRY restarted after 0.010 s"));
+  EXPECT_TRUE(logged(node.events(), NodeEvent::Level::kWarn, "ODOMETRY restarted after 0.010 s"));
 }
 
 TEST(FusionNode, EveryFixResultHasItsOwnCounter) {
