@@ -19,12 +19,12 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
   s.input_channel = config.string("/input_channel", s.input_channel);
   s.prior_channel = config.string("/prior_channel", s.prior_channel);
   s.output_channel = config.string("/output_channel", s.output_channel);
-  s.prior_max_age = config.number("/prior_max_age_s", s.prior_max_age, 0.0, 10.0);
-  s.use_own_pose_as_prior = config.boolean("/use_own_pose_as_prior", s.use_own_pose_as_prior);
-  s.own_prior_sigma_xy = config.number("/own_prior_sigma_m", s.own_prior_sigma_xy, 0.001, 10.0);
-  s.own_prior_sigma_theta =
-      config.number("/own_prior_sigma_deg", s.own_prior_sigma_theta / kDeg, 0.01, 90.0) * kDeg;
-  s.relocalize_on_start = config.number("/relocalize_on_start_s", s.relocalize_on_start, 0.0, 60.0);
+  PriorSelectionConfig& p = s.prior;
+  p.max_age = config.number("/prior_max_age_s", p.max_age, 0.0, 10.0);
+  p.use_own_pose = config.boolean("/use_own_pose_as_prior", p.use_own_pose);
+  p.own_sigma_xy = config.number("/own_prior_sigma_m", p.own_sigma_xy, 0.001, 10.0);
+  p.own_sigma_theta = config.number("/own_prior_sigma_deg", p.own_sigma_theta / kDeg, 0.01, 90.0) * kDeg;
+  p.relocalize_on_start = config.number("/relocalize_on_start_s", p.relocalize_on_start, 0.0, 60.0);
 
   m.min_range = config.number("/sensor/min_range_m", m.min_range, 0.0, 100.0);
   m.max_range = config.number("/sensor/max_range_m", m.max_range, 0.5, 100.0);
@@ -77,6 +77,16 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
       kDeg;
   m.min_matches = static_cast<int>(config.integer("/min_matches", m.min_matches, 3, 100));
   return s;
+}
+
+MatcherServiceConfig load_matcher_service_config(const std::string& path) {
+  const JsonConfig file =
+      path.empty() ? JsonConfig(nlohmann::json::object(), "(defaults)") : JsonConfig::load_file(path);
+  const std::string base =
+      path.empty() ? "deploy/config" : std::filesystem::path(path).parent_path().string();
+  MatcherServiceConfig config = parse_matcher_service_config(file, base);
+  file.reject_unknown_keys();
+  return config;
 }
 
 }  // namespace refloc

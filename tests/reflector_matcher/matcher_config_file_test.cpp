@@ -16,7 +16,7 @@ TEST(MatcherConfigFile, DeployedFileIsValidCompleteAndItsMapLoads) {
   const MatcherServiceConfig c = parse_matcher_service_config(file, dir);
   EXPECT_NO_THROW(file.reject_unknown_keys());
   EXPECT_EQ(c.matcher.mode, MatcherMode::kDefault);
-  EXPECT_DOUBLE_EQ(c.prior_max_age, 0.5);
+  EXPECT_DOUBLE_EQ(c.prior.max_age, 0.5);
   EXPECT_GE(load_reflector_map(c.map_file).reflectors.size(), 3u);
 }
 

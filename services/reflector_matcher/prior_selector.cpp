@@ -1,0 +1,50 @@
+#include "reflector_matcher/prior_selector.hpp"
+
+#include <cstdlib>
+
+namespace refloc {
+
+PosePrior prior_from_robot_pose(const FusedPose& pose, const Pose2& robot_T_laser) {
+  Eigen::Matrix3d robot_cov = pose.covariance;
+  if (!robot_cov.allFinite()) robot_cov.setZero();
+  // d(map_T_laser)/d(map_T_robot)
+  const double c = std::cos(pose.map_T_robot.theta), s = std::sin(pose.map_T_robot.theta);
+  Eigen::Matrix3d j = Eigen::Matrix3d::Identity();
+  j(0, 2) = -s * robot_T_laser.x - c * robot_T_laser.y;
+  j(1, 2) = c * robot_T_laser.x - s * robot_T_laser.y;
+  return PosePrior{pose.map_T_robot * robot_T_laser, j * robot_cov * j.transpose()};
+}
+
+PriorSelector::PriorSelector(const PriorSelectionConfig& config, const Pose2& robot_T_laser)
+    : config_(config),
+      robot_T_laser_(robot_T_laser),
+      max_age_us_(static_cast<int64_t>(config.max_age * 1e6)),
+      startup_(config.relocalize_on_start) {}
+
+PriorChoice PriorSelector::select(int64_t scan_utime) {
+  startup_was_done_ = startup_.done();
+  PriorChoice choice;
+  if (!startup_.prior_allowed(scan_utime)) {
+    choice.source = PriorSource::kStartupWindow;
+  } else if (last_pose_ && last_pose_->ok && std::llabs(scan_utime - last_pose_->utime) <= max_age_us_) {
+    choice.source = PriorSource::kFusedPose;
+    choice.prior = prior_from_robot_pose(*last_pose_, robot_T_laser_);
+  } else if (config_.use_own_pose && last_own_ok_ &&
+             std::llabs(scan_utime - last_own_ok_->first) <= max_age_us_) {
+    const double sxy2 = config_.own_sigma_xy * config_.own_sigma_xy;
+    const double st2 = config_.own_sigma_theta * config_.own_sigma_theta;
+    choice.source = PriorSource::kOwnPose;
+    choice.prior = PosePrior{last_own_ok_->second, Eigen::Vector3d(sxy2, sxy2, st2).asDiagonal()};
+  }
+  return choice;
+}
+
+StartupEvent PriorSelector::on_result(int64_t scan_utime, const MatchResult& result) {
+  startup_.on_result(result.status, result.mode);
+  if (result.status == MatchStatus::kOk) last_own_ok_ = std::make_pair(scan_utime, result.map_T_laser);
+  if (!startup_was_done_ && startup_.relocalized()) return StartupEvent::kRelocalized;
+  if (!startup_was_done_ && startup_.gave_up()) return StartupEvent::kGaveUp;
+  return StartupEvent::kNone;
+}
+
+}  // namespace refloc
