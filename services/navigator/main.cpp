@@ -1,13 +1,13 @@
 // navigator: NAV_GOAL (nav_goal_t) + POSE (pose2d_t) -> CMD_VEL (twist_t) at the
 // control rate while a goal is active, NAV_STATUS (nav_status_t) on every change
-// and at the status rate.
+// and at the status rate. Every decision is NavigatorNode's.
 
 #include "common/clock.hpp"
-#include "common/json_config.hpp"
+#include "common/node_event_report.hpp"
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
-#include "navigator/navigator.hpp"
 #include "navigator/navigator_config_file.hpp"
+#include "navigator/navigator_node.hpp"
 
 #include <refloc/nav_goal_t.hpp>
 #include <refloc/nav_status_t.hpp>
@@ -49,66 +49,38 @@ PoseQuality to_quality(int8_t status) {
   return PoseQuality::kUnusable;
 }
 
-bool goal_active(NavState s) { return s == NavState::kDriving || s == NavState::kStoppedNoPose; }
+twist_t to_message(const TwistCommand& cmd, int64_t utime) {
+  twist_t msg{};
+  msg.utime = utime;
+  msg.vx = cmd.vx;
+  msg.vy = cmd.vy;
+  msg.wz = cmd.wz;
+  return msg;
+}
 
 int run(const std::string& lcm_url, const std::string& config_path) {
-  NavigatorServiceConfig config;
-  if (!config_path.empty()) {
-    const JsonConfig file = JsonConfig::load_file(config_path);
-    config = parse_navigator_service_config(file);
-    file.reject_unknown_keys();
-  }
+  const NavigatorServiceConfig config = load_navigator_service_config(config_path);
   ServiceRuntime runtime("navigator", lcm_url);
-  Navigator navigator(config.navigator);
-  NavStatus published;
-  bool published_once = false;
-  int64_t last_active_utime = 0;
-
-  const auto publish_status = [&](bool only_on_change) {
-    const NavStatus& s = navigator.status();
-    const bool changed = !published_once || s.state != published.state || s.goal_id != published.goal_id ||
-                         s.waypoints_reached != published.waypoints_reached || s.reason != published.reason;
-    if (only_on_change && !changed) return;
-    if (changed) {
-      spdlog::info("goal {}: {} (waypoint {}/{}){}{}", s.goal_id, to_string(s.state), s.waypoints_reached,
-                   s.nwaypoints, s.reason.empty() ? "" : ": ", s.reason);
-    }
-    runtime.publish(config.status_channel, to_message(s, now_utime()));
-    published = s;
-    published_once = true;
+  NavigatorNode node(config.navigator);
+  const auto publish = [&](const NavigatorOutput& out, int64_t now) {
+    report_events(runtime, node.events());
+    if (out.command) runtime.publish(config.command_channel, to_message(*out.command, now));
+    if (out.status) runtime.publish(config.status_channel, to_message(*out.status, now_utime()));
   };
-
   runtime.subscribe<nav_goal_t>(config.goal_channel, [&](const nav_goal_t& msg) {
-    if (!navigator.set_goal(to_goal(msg), now_utime())) return;  // republished, already running
-    if (navigator.status().state == NavState::kAborted) ++runtime.counter("goals_refused");
-    publish_status(true);
+    const int64_t now = now_utime();
+    publish(node.on_goal(to_goal(msg), now), now);
   });
   runtime.subscribe<pose2d_t>(config.pose_channel, [&](const pose2d_t& msg) {
-    navigator.set_pose({msg.x, msg.y, msg.theta}, msg.utime, to_quality(msg.status));
+    node.on_pose({msg.x, msg.y, msg.theta}, msg.utime, to_quality(msg.status));
   });
   runtime.add_periodic(1.0 / config.control_rate, [&] {
     const int64_t now = now_utime();
-    const NavState before = navigator.status().state;
-    const TwistCommand cmd = navigator.update(now);
-    const NavState after = navigator.status().state;
-    if (after == NavState::kStoppedNoPose && before != NavState::kStoppedNoPose)
-      ++runtime.counter("pose_stops");
-    if (goal_active(before) || goal_active(after)) last_active_utime = now;
-    // Keep commanding (zeros once done) for half a second after a goal ends, then
-    // fall silent so another commander (teleoperation) may drive.
-    if (now - last_active_utime <= 500'000) {
-      twist_t msg{};
-      msg.utime = now;
-      msg.vx = cmd.vx;
-      msg.vy = cmd.vy;
-      msg.wz = cmd.wz;
-      runtime.publish(config.command_channel, msg);
-    }
-    publish_status(true);
-    runtime.set_state(after == NavState::kStoppedNoPose ? heartbeat_t::STATE_DEGRADED : heartbeat_t::STATE_OK,
-                      after == NavState::kStoppedNoPose ? navigator.status().reason : "");
+    publish(node.on_control_tick(now), now);
+    const NavigatorHealth health = node.health();
+    runtime.set_state(health.ok ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED, health.detail);
   });
-  runtime.add_periodic(1.0 / config.status_rate, [&] { publish_status(false); });
+  runtime.add_periodic(1.0 / config.status_rate, [&] { publish(node.on_status_tick(), now_utime()); });
   return runtime.run();
 }
 

@@ -26,8 +26,8 @@ struct NavigatorConfig {
   double settle_time = 0.2;             ///< within tolerance this long = waypoint reached [s]
   double progress_timeout = 30.0;       ///< abort when the waypoint gets no closer this long [s]
   double default_xy_tolerance = 0.010;  ///< [m]
-  double default_heading_tolerance = 0.5 * M_PI / 180.0;  ///< [rad]
-  bool drive_on_degraded_pose = false;                    ///< accept fused poses without a recent laser fix
+  double default_heading_tolerance = deg_to_rad(0.5);  ///< [rad]
+  bool drive_on_degraded_pose = false;                 ///< accept fused poses without a recent laser fix
 };
 
 struct Waypoint {

@@ -1,16 +1,9 @@
 #include "navigator/navigator_config_file.hpp"
 
+#include "common/angles.hpp"
 #include "common/json_config.hpp"
 
-#include <cmath>
-
 namespace refloc {
-namespace {
-
-constexpr double kDeg = M_PI / 180.0;
-
-}  // namespace
-
 NavigatorServiceConfig parse_navigator_service_config(const JsonConfig& config) {
   NavigatorServiceConfig c;
   NavigatorConfig& n = c.navigator;
@@ -25,15 +18,15 @@ NavigatorServiceConfig parse_navigator_service_config(const JsonConfig& config) 
   r.max_speed = config.number("/max_yaw_rate_rad_s", r.max_speed, 0.001, 10.0);
   r.max_accel = config.number("/max_yaw_accel_rad_s2", r.max_accel, 0.001, 50.0);
   r.brake_fraction = t.brake_fraction;
-  r.creep_distance = config.number("/creep_angle_deg", r.creep_distance / kDeg, 0.0, 90.0) * kDeg;
+  r.creep_distance = deg_to_rad(config.number("/creep_angle_deg", rad_to_deg(r.creep_distance), 0.0, 90.0));
   r.creep_speed = config.number("/creep_yaw_rate_rad_s", r.creep_speed, 0.0001, 1.0);
   r.gain = t.gain;
   n.pose_timeout = config.number("/pose_timeout_s", n.pose_timeout, 0.01, 5.0);
   n.settle_time = config.number("/settle_time_s", n.settle_time, 0.0, 10.0);
   n.progress_timeout = config.number("/progress_timeout_s", n.progress_timeout, 1.0, 3600.0);
   n.default_xy_tolerance = config.number("/default_xy_tolerance_m", n.default_xy_tolerance, 0.0001, 1.0);
-  n.default_heading_tolerance =
-      config.number("/default_heading_tolerance_deg", n.default_heading_tolerance / kDeg, 0.001, 45.0) * kDeg;
+  n.default_heading_tolerance = deg_to_rad(
+      config.number("/default_heading_tolerance_deg", rad_to_deg(n.default_heading_tolerance), 0.001, 45.0));
   n.drive_on_degraded_pose = config.boolean("/drive_on_degraded_pose", n.drive_on_degraded_pose);
   c.control_rate = config.number("/control_rate_hz", c.control_rate, 1.0, 1000.0);
   c.status_rate = config.number("/status_rate_hz", c.status_rate, 0.1, 100.0);
@@ -45,6 +38,14 @@ NavigatorServiceConfig parse_navigator_service_config(const JsonConfig& config) 
     if (config.string(key, "x").empty()) config.fail(key, "expected a channel name, got \"\"");
   }
   return c;
+}
+
+NavigatorServiceConfig load_navigator_service_config(const std::string& path) {
+  if (path.empty()) return {};
+  const JsonConfig file = JsonConfig::load_file(path);
+  NavigatorServiceConfig config = parse_navigator_service_config(file);
+  file.reject_unknown_keys();
+  return config;
 }
 
 }  // namespace refloc

@@ -23,4 +23,7 @@ struct NavigatorServiceConfig {
 /// The whole file; call config.reject_unknown_keys() afterwards.
 NavigatorServiceConfig parse_navigator_service_config(const JsonConfig& config);
 
+/// Load, parse and reject unknown keys; "" gives the defaults.
+NavigatorServiceConfig load_navigator_service_config(const std::string& path);
+
 }  // namespace refloc
