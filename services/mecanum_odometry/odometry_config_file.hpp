@@ -1,6 +1,7 @@
 #pragma once
 // mecanum_odometry's config file (deploy/config/mecanum_odometry.json). Every
-// key is optional with the default of the struct it fills.
+// key is optional with the default of the struct it fills; section "odometry" is
+// OdometryConfig. Wheel geometry and the noise model are the robot's (robot.json).
 
 #include "mecanum_odometry/mecanum_odometry.hpp"
 

@@ -1,6 +1,8 @@
 #pragma once
 // navigator's config file (deploy/config/navigator.json). Every key is
-// optional with the default of the struct it fills.
+// optional with the default of the struct it fills; the sections mirror the
+// structs: "navigator" is NavigatorConfig, its "translation" and "rotation" the
+// two ProfileLimits (rotation in rad, its creep_distance in degrees).
 
 #include "navigator/navigator.hpp"
 

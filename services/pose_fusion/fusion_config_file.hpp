@@ -1,6 +1,8 @@
 #pragma once
 // pose_fusion's config file (deploy/config/pose_fusion.json). Every key is
-// optional with the default of the struct it fills.
+// optional with the default of the struct it fills; the sections mirror the
+// structs: "fusion" is FusionConfig, "continuity" OdometryContinuityConfig. The
+// odometry noise is the robot's (robot.json), not read here.
 
 #include "pose_fusion/odometry_continuity.hpp"
 #include "pose_fusion/pose_fusion.hpp"

@@ -30,5 +30,16 @@ TEST(OdometryConfigFile, NoiseIsTheRobotsNotTheServices) {
   EXPECT_THROW(file.reject_unknown_keys(), ConfigError);
 }
 
+TEST(OdometryConfigFile, OutOfRangeKeyIsNamedWithItsSection) {
+  const JsonConfig file(nlohmann::json{{"odometry", {{"max_gap_s", 0.0}}}}, "mecanum_odometry.json");
+  try {
+    parse_odometry_service_config(file);
+    FAIL() << "accepted max_gap_s = 0";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("mecanum_odometry.json: /odometry/max_gap_s:"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace refloc
