@@ -7,8 +7,8 @@ namespace refloc {
 OdometryServiceConfig parse_odometry_service_config(const JsonConfig& config) {
   OdometryServiceConfig c;
   c.odometry.max_gap = config.number("/odometry/max_gap_s", c.odometry.max_gap, 0.01, 60.0);
-  c.odometry.max_plausible_wheel_speed =
-      config.number("/odometry/max_plausible_wheel_speed_rad_s", c.odometry.max_plausible_wheel_speed, 1.0, 10000.0);
+  c.odometry.max_plausible_wheel_speed = config.number("/odometry/max_plausible_wheel_speed_rad_s",
+                                                       c.odometry.max_plausible_wheel_speed, 1.0, 10000.0);
   c.slip_warning = config.number("/slip_warning_m_s", c.slip_warning, 0.0, 10.0);
   c.input_channel = config.string("/input_channel", c.input_channel);
   c.output_channel = config.string("/output_channel", c.output_channel);
