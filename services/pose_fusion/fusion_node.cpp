@@ -69,7 +69,7 @@ void FusionNode::apply_step(const OdometrySample& sample, const OdometryStep& st
   }
 }
 
-const FusedPose& FusionNode::on_odometry(const OdometrySample& sample, int64_t now_mono_us) {
+const FusionOutput& FusionNode::on_odometry(const OdometrySample& sample, int64_t now_mono_us) {
   events_.clear();
   apply_step(sample, continuity_.next(sample));
   for (const FixResult r : fusion_.deferred_results()) count_fix_result(r);
@@ -85,18 +85,18 @@ const FusedPose& FusionNode::on_odometry(const OdometrySample& sample, int64_t n
   return pose_;
 }
 
-std::optional<FusedPose> FusionNode::on_fix(const LaserFixInput& input, int64_t now_mono_us) {
+std::optional<FusionOutput> FusionNode::on_fix(const LaserFixInput& input, int64_t now_mono_us) {
   events_.clear();
   const std::optional<PoseFix> fix = usable_fix(input);
   if (!fix) {
     event("fixes_unusable");
     return std::nullopt;
   }
-  std::optional<FusedPose> out;
+  std::optional<FusionOutput> out;
   if (silence_.publish_fix(now_mono_us, input.utime)) {
     // No ODOMETRY (its service restarting?): the fix itself, DEGRADED, rather than no POSE at all.
-    out = FusedPose{input.utime, input.map_T_robot, input.covariance, FusionStatus::kDegraded,
-                    input.reflectors_used};
+    out = FusionOutput{input.utime, input.map_T_robot, input.covariance, FusionStatus::kDegraded,
+                       input.reflectors_used};
     event("fixes_published_without_odometry");
   }
   const FixResult result = fusion_.add_fix(*fix);

@@ -19,8 +19,8 @@
 
 namespace refloc {
 
-/// A POSE to publish.
-struct FusedPose {
+/// A POSE to publish (the plain form of pose2d_t on POSE).
+struct FusionOutput {
   int64_t utime = 0;  ///< [us]
   Pose2 map_T_robot;
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< [m^2, m rad, rad^2]
@@ -44,9 +44,9 @@ class FusionNode {
   FusionNode(const FusionServiceConfig& config, const OdometryNoise& noise);
 
   /// One ODOMETRY message arriving at now_mono_us [monotonic us]; the POSE to publish.
-  const FusedPose& on_odometry(const OdometrySample& sample, int64_t now_mono_us);
+  const FusionOutput& on_odometry(const OdometrySample& sample, int64_t now_mono_us);
   /// One LASER_POSE message arriving at now_mono_us; a POSE to publish while odometry is silent.
-  std::optional<FusedPose> on_fix(const LaserFixInput& input, int64_t now_mono_us);
+  std::optional<FusionOutput> on_fix(const LaserFixInput& input, int64_t now_mono_us);
 
   /// Counters and log lines of the last on_odometry / on_fix call.
   const std::vector<NodeEvent>& events() const { return events_; }
@@ -65,7 +65,7 @@ class FusionNode {
   OdometrySilence silence_;
   int32_t reflectors_used_ = 0;
   FusionStatus published_status_ = FusionStatus::kInitializing;
-  FusedPose pose_;
+  FusionOutput pose_;
   std::vector<NodeEvent> events_;
 };
 

@@ -42,7 +42,7 @@ LaserFixInput from_message(const pose2d_t& msg) {
   return in;
 }
 
-pose2d_t to_message(const FusedPose& pose) {
+pose2d_t to_message(const FusionOutput& pose) {
   pose2d_t out{};
   out.utime = pose.utime;
   out.x = pose.map_T_robot.x;
@@ -60,7 +60,7 @@ int run(const std::string& lcm_url, const std::string& robot_path, const std::st
   ServiceRuntime runtime("pose_fusion", lcm_url);
   FusionNode node(config, load_robot_config(robot_path).odometry_noise);
   runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
-    const FusedPose& pose =
+    const FusionOutput& pose =
         node.on_odometry({msg.utime, {msg.x, msg.y, msg.theta}, msg.distance}, monotonic_us());
     report_events(runtime, node.events());
     runtime.publish(config.output_channel, to_message(pose));
@@ -68,7 +68,7 @@ int run(const std::string& lcm_url, const std::string& robot_path, const std::st
     runtime.set_state(health.ok ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED, health.detail);
   });
   runtime.subscribe<pose2d_t>(config.fix_channel, [&](const pose2d_t& msg) {
-    const std::optional<FusedPose> pose = node.on_fix(from_message(msg), monotonic_us());
+    const std::optional<FusionOutput> pose = node.on_fix(from_message(msg), monotonic_us());
     if (pose) runtime.publish(config.output_channel, to_message(*pose));
     report_events(runtime, node.events());
   });

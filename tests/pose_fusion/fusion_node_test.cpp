@@ -73,14 +73,14 @@ TEST(FusionNode, DegradedFixCannotStartTheFilter) {
 
 TEST(FusionNode, GoodFixInitialisesThenPoseIsOkWithItsReflectorCount) {
   FusionNode node(FusionServiceConfig{}, OdometryNoise{});
-  const FusedPose& first = node.on_odometry(odometry_at(0), 0);
+  const FusionOutput& first = node.on_odometry(odometry_at(0), 0);
   EXPECT_EQ(first.status, FusionStatus::kInitializing);
   EXPECT_FALSE(node.health().ok);
   EXPECT_EQ(node.health().detail, "INITIALIZING");
   node.on_fix(fix_at(kT0, Pose2{1.0, 2.0, 0.5}), 1000);
   EXPECT_EQ(count(node.events(), "initialisations"), 1);
   EXPECT_TRUE(logged(node.events(), NodeEvent::Level::kInfo, "initialised from the fix at utime 100000000"));
-  const FusedPose& pose = node.on_odometry(odometry_at(1), 10'000);
+  const FusionOutput& pose = node.on_odometry(odometry_at(1), 10'000);
   EXPECT_EQ(pose.status, FusionStatus::kOk);
   EXPECT_EQ(pose.utime, kT0 + kPeriod);
   EXPECT_EQ(pose.reflectors_used, 5);
@@ -106,7 +106,7 @@ TEST(FusionNode, SilentOdometryPublishesEachNewFixAsDegraded) {
   config.odometry_timeout = 0.1;
   FusionNode node(config, OdometryNoise{});
   // No odometry at all: the fix is the POSE, DEGRADED, with its own values.
-  const std::optional<FusedPose> alone = node.on_fix(fix_at(kT0, Pose2{1.0, 2.0, 0.5}), 0);
+  const std::optional<FusionOutput> alone = node.on_fix(fix_at(kT0, Pose2{1.0, 2.0, 0.5}), 0);
   ASSERT_TRUE(alone);
   EXPECT_EQ(alone->status, FusionStatus::kDegraded);
   EXPECT_EQ(alone->utime, kT0);
