@@ -18,6 +18,12 @@ class SolverNode {
                              const std::vector<ReflectorDetection>& detections,
                              const std::vector<ReflectorMatch>& matches);
 
+  /// The same for a scan's detections and the matches indexing them: each match takes its
+  /// detection along, as REFLECTOR_MATCHES carries them (detections 0..n-1 in match order).
+  const LaserFix& on_scan_matches(int64_t utime, MatchVerdict verdict,
+                                  const std::vector<ReflectorDetection>& scan_detections,
+                                  const std::vector<ReflectorMatch>& scan_matches);
+
   const PoseSolver& solver() const { return solver_; }
   /// The last scan's solution (stale when the verdict was not kOk).
   const PoseSolution& solution() const { return solution_; }
@@ -26,6 +32,8 @@ class SolverNode {
   PoseSolver solver_;
   PoseSolution solution_;
   LaserFix fix_;
+  std::vector<ReflectorDetection> matched_detections_;
+  std::vector<ReflectorMatch> matches_;
 };
 
 }  // namespace refloc

@@ -164,7 +164,9 @@ StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Po
   for (size_t p = 0; p < poses.size(); ++p) {
     const Pose2 map_T_laser = poses[p] * robot_T_laser;
     for (int r = 0; r < config.repeats; ++r) {
-      renderer.render(world, map_T_laser, 1700000000000000 + static_cast<int64_t>(done) * 20000, rng, scan);
+      const auto utime =
+          1700000000000000 + static_cast<int64_t>(static_cast<double>(done) * config.scan_spacing * 1e6);
+      renderer.render(world, map_T_laser, utime, rng, scan);
       crlb_beams.clear();
       for (size_t b = 0; b < renderer.truth().size(); ++b) {
         const auto& t = renderer.truth()[b];
@@ -176,17 +178,18 @@ StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Po
       const auto point_crlb = beam_range_crlb(map, poses[p], robot_T_laser, crlb_beams, config.range_sigma,
                                               BeamSpotModel::point_beam());
       for (LocalizationPipeline* pipeline : {&paper, &best}) {
-        const PipelineOutput& out = pipeline->run(scan);
+        const PipelineOutput& out = pipeline->on_scan(scan);
         Measurement m;
         m.mode = pipeline->mode();
         m.pose_index = static_cast<int>(p);
         m.repeat = r;
         m.truth = poses[p];
         m.published_ok = out.published_ok();
-        m.match_status = out.match.status;
-        m.solve_status = out.solution.status;
-        m.estimate = out.solution.map_T_robot;
-        m.reflectors_used = out.solution.reflectors_used;
+        m.match_status = out.match->result.status;
+        // The solver runs only on an OK match (the services' rule): else no solution.
+        m.solve_status = out.fix->has_pose ? out.solution->status : SolveStatus::kLost;
+        m.estimate = out.fix->map_T_robot;
+        m.reflectors_used = out.fix->reflectors_used;
         if (crlb) {
           m.has_crlb = true;
           m.crlb_var_xy = (*crlb)(0, 0) + (*crlb)(1, 1);
@@ -197,7 +200,7 @@ StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Po
         }
         m.wrong =
             m.published_ok && !approx_equal(m.estimate, m.truth, config.wrong_distance, config.wrong_angle);
-        score_detections(world, map_T_laser, renderer.truth(), *out.detections,
+        score_detections(world, map_T_laser, renderer.truth(), out.detections(),
                          config.detection_match_distance, m);
         result.measurements.push_back(m);
       }

@@ -25,6 +25,11 @@ struct StudyConfig {
   double wrong_distance = 0.2;  ///< a published pose farther than this from the truth is wrong [m]
   double wrong_angle = 5.0 * M_PI / 180.0;  ///< ... or turned more than this [rad]
   double detection_match_distance = 0.1;    ///< a detection this close to a real reflector is true [m]
+  /// Time between consecutive scans [s]. Poses are independent trials: with more than the
+  /// matcher's prior_max_age_s between scans neither a POSE nor its own last fix is fresh,
+  /// so the services' prior rule (PriorSelector) gives no prior and every scan is a global
+  /// relocalization, as on a robot that just woke up there.
+  double scan_spacing = 1.0;
 };
 
 struct Measurement {

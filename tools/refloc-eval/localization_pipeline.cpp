@@ -1,9 +1,6 @@
 #include "localization_pipeline.hpp"
 
 #include "common/json_config.hpp"
-#include "pose_solver/solver_config_file.hpp"
-#include "reflector_extractor/extractor_config_file.hpp"
-#include "reflector_matcher/matcher_config_file.hpp"
 
 namespace refloc {
 namespace {
@@ -16,26 +13,45 @@ JsonConfig with_mode(const std::string& path, PipelineMode mode) {
   return JsonConfig(std::move(document), path);
 }
 
+MatchVerdict verdict_of(MatchStatus s) {
+  switch (s) {
+    case MatchStatus::kOk:
+      return MatchVerdict::kOk;
+    case MatchStatus::kAmbiguous:
+      return MatchVerdict::kAmbiguous;
+    case MatchStatus::kLost:
+      break;
+  }
+  return MatchVerdict::kLost;
+}
+
 }  // namespace
 
 const char* to_string(PipelineMode mode) { return mode == PipelineMode::kPaper ? "paper" : "default"; }
-
-bool PipelineOutput::published_ok() const {
-  return match.status == MatchStatus::kOk &&
-         (solution.status == SolveStatus::kOk || solution.status == SolveStatus::kDegraded);
-}
 
 PipelineConfigs load_pipeline_configs(PipelineMode mode, const std::string& extractor_file,
                                       const std::string& matcher_file, const std::string& solver_file) {
   PipelineConfigs configs;
   const JsonConfig extractor = with_mode(extractor_file, mode);
-  configs.extractor = parse_extractor_service_config(extractor).extractor;
+  configs.extractor = parse_extractor_service_config(extractor);
   extractor.reject_unknown_keys();
   const JsonConfig matcher = with_mode(matcher_file, mode);
-  configs.matcher = parse_matcher_service_config(matcher, ".").matcher;
+  configs.matcher = parse_matcher_service_config(matcher, ".");
   matcher.reject_unknown_keys();
   const JsonConfig solver = with_mode(solver_file, mode);
-  configs.solver = parse_solver_service_config(solver).solver;
+  configs.solver = parse_solver_service_config(solver);
+  solver.reject_unknown_keys();
+  return configs;
+}
+
+PipelineConfigs load_deployed_pipeline_configs(const std::string& config_dir) {
+  PipelineConfigs configs;
+  const JsonConfig extractor = JsonConfig::load_file(config_dir + "/reflector_extractor.json");
+  configs.extractor = parse_extractor_service_config(extractor);
+  extractor.reject_unknown_keys();
+  configs.matcher = load_matcher_service_config(config_dir + "/reflector_matcher.json");
+  const JsonConfig solver = JsonConfig::load_file(config_dir + "/pose_solver.json");
+  configs.solver = parse_solver_service_config(solver);
   solver.reject_unknown_keys();
   return configs;
 }
@@ -43,22 +59,18 @@ PipelineConfigs load_pipeline_configs(PipelineMode mode, const std::string& extr
 LocalizationPipeline::LocalizationPipeline(PipelineMode mode, const PipelineConfigs& configs,
                                            const ReflectorMap& map, const Pose2& robot_T_laser)
     : mode_(mode),
-      robot_T_laser_(robot_T_laser),
-      extractor_(configs.extractor),
-      matcher_(map, configs.matcher),
-      solver_(configs.solver, robot_T_laser) {}
+      extractor_(configs.extractor, robot_T_laser),
+      matcher_(map, configs.matcher, robot_T_laser),
+      solver_(configs.solver.solver, robot_T_laser) {}
 
-const PipelineOutput& LocalizationPipeline::run(const LaserScan& scan, const Pose2* prior_map_T_robot) {
-  output_.detections = &extractor_.extract(scan);
-  PosePrior prior;
-  const PosePrior* prior_ptr = nullptr;
-  if (prior_map_T_robot && mode_ == PipelineMode::kDefault) {
-    prior.map_T_laser = *prior_map_T_robot * robot_T_laser_;
-    prior.covariance = Eigen::Vector3d(0.02 * 0.02, 0.02 * 0.02, 0.01 * 0.01).asDiagonal();
-    prior_ptr = &prior;
-  }
-  matcher_.match(*output_.detections, prior_ptr, output_.match);
-  solver_.solve(*output_.detections, output_.match.matches, output_.solution);
+const PipelineOutput& LocalizationPipeline::on_scan(const LaserScan& scan) {
+  const ExtractorOutput& extraction = extractor_.on_scan(scan);
+  const MatcherOutput& match = matcher_.on_detections(extraction.utime, extraction.detections);
+  output_.extraction = &extraction;
+  output_.match = &match;
+  output_.fix = &solver_.on_scan_matches(match.utime, verdict_of(match.result.status), extraction.detections,
+                                         match.result.matches);
+  output_.solution = &solver_.solution();
   return output_;
 }
 

@@ -140,8 +140,8 @@ int run(const std::string& command, Options o) {
   PipelineConfigs default_configs =
       load_pipeline_configs(PipelineMode::kDefault, o.extractor_file, o.matcher_file, o.solver_file);
   // The clustering threshold and the fit weights follow the simulated sensor's noise.
-  paper_configs.extractor.clustering.range_sigma = config.range_sigma;
-  default_configs.extractor.clustering.range_sigma = config.range_sigma;
+  paper_configs.extractor.extractor.clustering.range_sigma = config.range_sigma;
+  default_configs.extractor.extractor.clustering.range_sigma = config.range_sigma;
   const StudyResult r = run_study(world, map, robot.robot_T_laser, paper_configs, default_configs, poses,
                                   config, o.progress ? ProgressCallback(print_progress) : ProgressCallback());
   if (paper_table) print_paper_table(r, poses, config.repeats);

@@ -1,0 +1,264 @@
+// refloc-eval's LocalizationPipeline is the services' chain, not a copy of it:
+//  1. a scan sequence rendered along a drive, with ODOMETRY and POSE interleaved in time
+//     order, run through ExtractorNode -> REFLECTORS -> MatcherNode -> REFLECTOR_MATCHES ->
+//     SolverNode exactly as the three mains do (every message encoded and decoded by LCM)
+//     and through the pipeline: LASER_POSE identical field by field;
+//  2. logs/samples/replay_demo_4s.lcm (recorded from the service processes) fed to the
+//     pipeline in log order: the recorded LASER_POSE reproduced after the matcher's cold start.
+
+#include "common/lcm_conversions.hpp"
+#include "common/reflector_map.hpp"
+#include "common/robot_config.hpp"
+#include "localization_pipeline.hpp"
+#include "world_renderer/scan_renderer.hpp"
+#include "world_renderer/world_loader.hpp"
+
+#include <gtest/gtest.h>
+#include <lcm/lcm-cpp.hpp>
+#include <refloc/laser_scan_t.hpp>
+#include <refloc/odometry_t.hpp>
+#include <refloc/pose2d_t.hpp>
+#include <refloc/reflector_detections_t.hpp>
+#include <refloc/reflector_matches_t.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace refloc {
+namespace {
+
+const std::string kConfig = std::string(REFLOC_SOURCE_DIR) + "/deploy/config";
+
+/// An LCM message as a process on the other side of the wire gets it.
+template <class Message>
+Message over_the_wire(const Message& m) {
+  std::vector<uint8_t> bytes(static_cast<size_t>(m.getEncodedSize()));
+  EXPECT_GE(m.encode(bytes.data(), 0, static_cast<int>(bytes.size())), 0);
+  Message out;
+  EXPECT_GE(out.decode(bytes.data(), 0, static_cast<int>(bytes.size())), 0);
+  return out;
+}
+
+pose2d_t laser_pose_of(const LaserFix& fix) {
+  constexpr int8_t kStatus[] = {pose2d_t::STATUS_OK, pose2d_t::STATUS_DEGRADED, pose2d_t::STATUS_LOST,
+                                pose2d_t::STATUS_AMBIGUOUS};
+  pose2d_t p{};
+  p.utime = fix.utime;
+  p.status = kStatus[static_cast<int>(fix.status)];
+  p.x = fix.map_T_robot.x;
+  p.y = fix.map_T_robot.y;
+  p.theta = fix.map_T_robot.theta;
+  covariance_to_lcm(fix.covariance, p.covariance);
+  p.reflectors_used = fix.reflectors_used;
+  p.residual = fix.residual;
+  return p;
+}
+
+std::vector<std::string> differing_fields(const pose2d_t& a, const pose2d_t& b) {
+  std::vector<std::string> d;
+  if (a.utime != b.utime) d.push_back("utime");
+  if (a.x != b.x) d.push_back("x");
+  if (a.y != b.y) d.push_back("y");
+  if (a.theta != b.theta) d.push_back("theta");
+  for (int i = 0; i < 9; ++i)
+    if (a.covariance[i] != b.covariance[i]) d.push_back("covariance[" + std::to_string(i) + "]");
+  if (a.status != b.status) d.push_back("status");
+  if (a.reflectors_used != b.reflectors_used) d.push_back("reflectors_used");
+  if (a.residual != b.residual) d.push_back("residual");
+  return d;
+}
+
+FusedPose fused_of(const pose2d_t& m) {
+  return {m.utime, {m.x, m.y, m.theta}, covariance_from_lcm(m.covariance), m.status == pose2d_t::STATUS_OK};
+}
+
+/// The three services as their mains run them, each message crossing LCM.
+class ServiceChain {
+ public:
+  ServiceChain(const PipelineConfigs& c, const ReflectorMap& map, const Pose2& robot_T_laser)
+      : extractor_(c.extractor, robot_T_laser),
+        matcher_(map, c.matcher, robot_T_laser),
+        solver_(c.solver.solver, robot_T_laser) {}
+
+  void on_odometry(const odometry_t& sent) {
+    const odometry_t m = over_the_wire(sent);
+    extractor_.on_odometry({m.utime, {m.vx, m.vy, m.wz}});
+  }
+  void on_pose(const pose2d_t& sent) { matcher_.on_pose(fused_of(over_the_wire(sent))); }
+  pose2d_t on_scan(const laser_scan_t& sent) {
+    LaserScan scan;
+    EXPECT_TRUE(from_lcm(over_the_wire(sent), scan));
+    const ExtractorOutput& e = extractor_.on_scan(scan);
+    reflector_detections_t reflectors{};
+    reflectors.utime = e.utime;
+    for (const ReflectorDetection& d : e.detections) reflectors.reflectors.push_back(to_lcm(d));
+    reflectors.nreflectors = static_cast<int32_t>(reflectors.reflectors.size());
+    reflectors = over_the_wire(reflectors);
+
+    std::vector<ReflectorDetection> detections;
+    for (const reflector_t& r : reflectors.reflectors) detections.push_back(from_lcm(r));
+    const MatcherOutput& m = matcher_.on_detections(reflectors.utime, detections);
+    reflector_matches_t matches{};
+    matches.utime = reflectors.utime;
+    matches.status = static_cast<int8_t>(m.result.status);
+    for (const ReflectorMatch& r : m.result.matches)
+      matches.matches.push_back({reflectors.reflectors[static_cast<size_t>(r.detection_index)], r.map_id,
+                                 r.map_p_center.x(), r.map_p_center.y(), r.map_radius});
+    matches.nmatches = static_cast<int32_t>(matches.matches.size());
+    matches = over_the_wire(matches);
+
+    std::vector<ReflectorDetection> matched;
+    std::vector<ReflectorMatch> solver_matches;
+    for (const reflector_match_t& r : matches.matches) {
+      solver_matches.push_back(
+          {static_cast<int>(matched.size()), r.map_id, {r.map_x, r.map_y}, r.map_radius});
+      matched.push_back(from_lcm(r.detection));
+    }
+    const MatchVerdict verdict = matches.status == reflector_matches_t::STATUS_OK ? MatchVerdict::kOk
+                                 : matches.status == reflector_matches_t::STATUS_AMBIGUOUS
+                                     ? MatchVerdict::kAmbiguous
+                                     : MatchVerdict::kLost;
+    return over_the_wire(laser_pose_of(solver_.on_matches(matches.utime, verdict, matched, solver_matches)));
+  }
+
+ private:
+  ExtractorNode extractor_;
+  MatcherNode matcher_;
+  SolverNode solver_;
+};
+
+TEST(EvalPipelineEquivalence,
+     RenderedDriveThroughTheServiceNodesAndThroughThePipelineGivesIdenticalLaserPose) {
+  const sim::World world = sim::load_world(kConfig + "/world_demo.json");
+  const ReflectorMap map = load_reflector_map(world.map_file);
+  const Pose2 robot_T_laser = load_robot_config(kConfig + "/robot.json").robot_T_laser;
+  const PipelineConfigs configs = load_deployed_pipeline_configs(kConfig);
+  ServiceChain services(configs, map, robot_T_laser);
+  LocalizationPipeline pipeline(PipelineMode::kDefault, configs, map, robot_T_laser);
+
+  // 4 s along a curve: 100 Hz ODOMETRY and POSE (the truth, 1 cm / 0.5 deg), 50 Hz scans.
+  const BodyTwist twist{0.6, 0.1, 0.15};
+  const Pose2 start{4.0, 2.0, 0.0};
+  const auto truth_at = [&](int64_t t_us) {
+    return start * se2_exp(twist, 1e-6 * static_cast<double>(t_us));
+  };
+  sim::ScanRenderer renderer{sim::ScanRenderConfig{}};
+  std::mt19937_64 rng(5);
+  const int64_t t0 = 1'700'000'000'000'000;
+  size_t compared = 0, identical = 0, with_pose = 0;
+  for (int64_t t = 0; t <= 4'000'000; t += 10'000) {
+    odometry_t odo{};
+    odo.utime = t0 + t;
+    odo.vx = twist.vx;
+    odo.vy = twist.vy;
+    odo.wz = twist.wz;
+    services.on_odometry(odo);
+    pipeline.on_odometry({odo.utime, twist});
+    pose2d_t pose{};
+    pose.utime = t0 + t;
+    const Pose2 p = truth_at(t);
+    pose.x = p.x, pose.y = p.y, pose.theta = p.theta;
+    pose.covariance[0] = pose.covariance[4] = 1e-4;
+    pose.covariance[8] = std::pow(0.5 * M_PI / 180.0, 2);
+    pose.status = pose2d_t::STATUS_OK;
+    services.on_pose(pose);
+    pipeline.on_pose(fused_of(over_the_wire(pose)));
+    if (t % 20'000 != 0) continue;
+    LaserScan rendered;
+    renderer.render(
+        world, [&](int64_t u) { return truth_at(u - t0) * robot_T_laser; }, t0 + t, rng, rendered);
+    // The scan as lms100_driver publishes it (laser_scan_t keeps angles and times as float):
+    // both chains start from LMS100_SCAN.
+    const laser_scan_t published = to_lcm(rendered);
+    LaserScan scan;
+    ASSERT_TRUE(from_lcm(over_the_wire(published), scan));
+    const pose2d_t via_services = services.on_scan(published);
+    const pose2d_t via_pipeline = laser_pose_of(*pipeline.on_scan(scan).fix);
+    ++compared;
+    if (via_services.status == pose2d_t::STATUS_OK || via_services.status == pose2d_t::STATUS_DEGRADED)
+      ++with_pose;
+    const auto d = differing_fields(via_services, via_pipeline);
+    if (d.empty()) {
+      ++identical;
+    } else {
+      std::string fields;
+      for (const auto& f : d) fields += " " + f;
+      ADD_FAILURE() << "scan at t = " << t << " us differs in:" << fields;
+    }
+  }
+  std::printf("rendered drive: %zu of %zu LASER_POSE identical in every field (%zu with a pose)\n", identical,
+              compared, with_pose);
+  EXPECT_EQ(compared, 201u);
+  EXPECT_EQ(identical, compared);
+  EXPECT_GE(with_pose, compared / 2);  // the comparison covers fixes, not only their absence
+}
+
+TEST(EvalPipelineEquivalence, RecordedLogInLogOrderThroughThePipelineReproducesTheRecordedLaserPose) {
+  const PipelineConfigs configs = load_deployed_pipeline_configs(kConfig);
+  const ReflectorMap map = load_reflector_map(configs.matcher.map_file);
+  const Pose2 robot_T_laser = load_robot_config(kConfig + "/robot.json").robot_T_laser;
+  LocalizationPipeline pipeline(PipelineMode::kDefault, configs, map, robot_T_laser);
+
+  lcm::LogFile log(std::string(REFLOC_SOURCE_DIR) + "/logs/samples/replay_demo_4s.lcm", "r");
+  ASSERT_TRUE(log.good());
+  std::map<int64_t, pose2d_t> recorded, replayed;
+  std::vector<int64_t> scan_order;
+  while (const lcm::LogEvent* e = log.readNextEvent()) {
+    if (e->channel == "LMS100_SCAN") {
+      laser_scan_t m;
+      if (m.decode(e->data, 0, e->datalen) < 0) continue;
+      LaserScan scan;
+      ASSERT_TRUE(from_lcm(m, scan));
+      const pose2d_t p = laser_pose_of(*pipeline.on_scan(scan).fix);
+      replayed[p.utime] = p;
+      scan_order.push_back(p.utime);
+    } else if (e->channel == "ODOMETRY") {
+      odometry_t m;
+      if (m.decode(e->data, 0, e->datalen) >= 0) pipeline.on_odometry({m.utime, {m.vx, m.vy, m.wz}});
+    } else if (e->channel == "POSE") {
+      pose2d_t m;
+      if (m.decode(e->data, 0, e->datalen) >= 0) pipeline.on_pose(fused_of(m));
+    } else if (e->channel == "LASER_POSE") {
+      pose2d_t m;
+      if (m.decode(e->data, 0, e->datalen) >= 0) recorded[m.utime] = m;
+    }
+  }
+  constexpr size_t kColdStartScans = 60;  // 1.2 s at 50 Hz, as in replay_integration
+  size_t compared = 0, identical = 0, same_status = 0, first_ok = scan_order.size(), identical_all = 0;
+  double worst_xy = 0.0, worst_theta = 0.0;
+  for (size_t i = 0; i < scan_order.size(); ++i) {
+    const pose2d_t& mine = replayed[scan_order[i]];
+    if (mine.status == pose2d_t::STATUS_OK) first_ok = std::min(first_ok, i);
+    const auto it = recorded.find(scan_order[i]);
+    if (it != recorded.end() && differing_fields(mine, it->second).empty()) ++identical_all;
+    if (i < kColdStartScans || it == recorded.end()) continue;
+    ++compared;
+    if (differing_fields(mine, it->second).empty()) ++identical;
+    if (mine.status != it->second.status) {
+      std::printf("scan %zu: recorded status %d, pipeline %d\n", i, it->second.status, mine.status);
+      continue;
+    }
+    ++same_status;
+    if (mine.status != pose2d_t::STATUS_OK && mine.status != pose2d_t::STATUS_DEGRADED) continue;
+    worst_xy = std::max(worst_xy, std::hypot(mine.x - it->second.x, mine.y - it->second.y));
+    worst_theta = std::max(worst_theta, std::abs(std::remainder(mine.theta - it->second.theta, 2 * M_PI)));
+  }
+  std::printf(
+      "log replay: %zu scans, %zu recorded LASER_POSE, first OK at scan %zu; after the cold start %zu "
+      "compared, "
+      "%zu same status, %zu identical in every field (%zu of all), worst %.6f mm %.6f deg\n",
+      scan_order.size(), recorded.size(), first_ok, compared, same_status, identical, identical_all,
+      1000 * worst_xy, worst_theta * 180 / M_PI);
+  EXPECT_LE(first_ok, kColdStartScans);
+  EXPECT_GE(compared, (recorded.size() - kColdStartScans) * 95 / 100);
+  EXPECT_GE(same_status, compared * 98 / 100);
+  EXPECT_LT(worst_xy, 0.001);
+  EXPECT_LT(worst_theta, 0.05 * M_PI / 180.0);
+}
+
+}  // namespace
+}  // namespace refloc
