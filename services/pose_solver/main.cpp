@@ -61,8 +61,8 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
       detections.push_back(from_lcm(m.detection));
     }
     const LaserFix& fix = node.on_matches(msg.utime, from_message_status(msg.status), detections, matches);
-    if (fix.ok()) runtime.set_state(heartbeat_t::STATE_OK);
-    if (!fix.ok()) runtime.set_state(heartbeat_t::STATE_DEGRADED, fix.degraded_detail());
+    runtime.set_state(fix.ok() ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED,
+                      fix.ok() ? "" : fix.degraded_detail());
     fix.for_each_counter([&](const char* name, int64_t by) { runtime.counter(name) += by; });
     to_message(fix, out);
     runtime.publish(config.output_channel, out);
