@@ -6,9 +6,9 @@ namespace refloc {
 
 std::optional<PoseFix> usable_fix(const LaserFixInput& input) {
   PoseFix fix;
-  if (input.status == LaserFixStatus::kOk) {
+  if (input.status == FixStatus::kOk) {
     fix.quality = FixQuality::kGood;
-  } else if (input.status == LaserFixStatus::kDegraded) {
+  } else if (input.status == FixStatus::kDegraded) {
     fix.quality = FixQuality::kUsable;
   } else {
     return std::nullopt;

@@ -14,15 +14,15 @@
 
 namespace refloc {
 
-/// The solver's status of a LASER_POSE, as far as fusion distinguishes it.
-enum class LaserFixStatus { kOk, kDegraded, kNoPose };
+/// The solver's status of a LASER_POSE, as far as fusion distinguishes it (pose2d_t::STATUS_*).
+enum class FixStatus { kOk, kDegraded, kNoPose };
 
 /// One LASER_POSE message (pose2d_t) as a plain struct.
 struct LaserFixInput {
   int64_t utime = 0;  ///< time of the scan the pose refers to [us]
   Pose2 map_T_robot;
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< [m^2, m rad, rad^2]
-  LaserFixStatus status = LaserFixStatus::kNoPose;
+  FixStatus status = FixStatus::kNoPose;
   int32_t reflectors_used = 0;
 };
 

@@ -35,9 +35,9 @@ LaserFixInput from_message(const pose2d_t& msg) {
   in.utime = msg.utime;
   in.map_T_robot = {msg.x, msg.y, msg.theta};
   in.covariance = covariance_from_lcm(msg.covariance);
-  in.status = msg.status == pose2d_t::STATUS_OK         ? LaserFixStatus::kOk
-              : msg.status == pose2d_t::STATUS_DEGRADED ? LaserFixStatus::kDegraded
-                                                        : LaserFixStatus::kNoPose;
+  in.status = msg.status == pose2d_t::STATUS_OK         ? FixStatus::kOk
+              : msg.status == pose2d_t::STATUS_DEGRADED ? FixStatus::kDegraded
+                                                        : FixStatus::kNoPose;
   in.reflectors_used = msg.reflectors_used;
   return in;
 }

@@ -16,7 +16,7 @@ namespace {
 constexpr int64_t kT0 = 100'000'000;
 constexpr int64_t kPeriod = 10'000;  // odometry at 100 Hz
 
-LaserFixInput fix_at(int64_t utime, const Pose2& pose, LaserFixStatus status = LaserFixStatus::kOk) {
+LaserFixInput fix_at(int64_t utime, const Pose2& pose, FixStatus status = FixStatus::kOk) {
   LaserFixInput in;
   in.utime = utime;
   in.map_T_robot = pose;
@@ -44,8 +44,8 @@ bool logged(const std::vector<NodeEvent>& events, NodeEvent::Level level, const 
 
 TEST(UsableFix, OnlyOkAndDegradedWithAFinitePoseAndPositiveCovariance) {
   EXPECT_EQ(usable_fix(fix_at(kT0, Pose2{})).value().quality, FixQuality::kGood);
-  EXPECT_EQ(usable_fix(fix_at(kT0, Pose2{}, LaserFixStatus::kDegraded)).value().quality, FixQuality::kUsable);
-  EXPECT_FALSE(usable_fix(fix_at(kT0, Pose2{}, LaserFixStatus::kNoPose)));
+  EXPECT_EQ(usable_fix(fix_at(kT0, Pose2{}, FixStatus::kDegraded)).value().quality, FixQuality::kUsable);
+  EXPECT_FALSE(usable_fix(fix_at(kT0, Pose2{}, FixStatus::kNoPose)));
   EXPECT_FALSE(usable_fix(fix_at(kT0, Pose2{std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0})));
   LaserFixInput zero_variance = fix_at(kT0, Pose2{});
   zero_variance.covariance(2, 2) = 0.0;
@@ -57,7 +57,7 @@ TEST(UsableFix, OnlyOkAndDegradedWithAFinitePoseAndPositiveCovariance) {
 
 TEST(FusionNode, UnusableFixIsCountedAndNeitherFusedNorPublished) {
   FusionNode node(FusionServiceConfig{}, OdometryNoise{});
-  EXPECT_FALSE(node.on_fix(fix_at(kT0, Pose2{}, LaserFixStatus::kNoPose), 0));
+  EXPECT_FALSE(node.on_fix(fix_at(kT0, Pose2{}, FixStatus::kNoPose), 0));
   EXPECT_EQ(count(node.events(), "fixes_unusable"), 1);
   EXPECT_EQ(node.events().size(), 1u);
   EXPECT_FALSE(node.fusion().initialised());
@@ -66,7 +66,7 @@ TEST(FusionNode, UnusableFixIsCountedAndNeitherFusedNorPublished) {
 TEST(FusionNode, DegradedFixCannotStartTheFilter) {
   FusionNode node(FusionServiceConfig{}, OdometryNoise{});
   node.on_odometry(odometry_at(0), 0);
-  node.on_fix(fix_at(kT0, Pose2{}, LaserFixStatus::kDegraded), 1000);
+  node.on_fix(fix_at(kT0, Pose2{}, FixStatus::kDegraded), 1000);
   EXPECT_EQ(count(node.events(), "fixes_not_good_enough_to_start"), 1);
   EXPECT_FALSE(node.fusion().initialised());
 }
