@@ -30,6 +30,10 @@ int8_t to_message_status(FusionStatus s) {
   return pose2d_t::STATUS_LOST;
 }
 
+OdometrySample from_message(const odometry_t& msg) {
+  return {msg.utime, {msg.vx, msg.vy, msg.wz}, {msg.x, msg.y, msg.theta}, msg.distance};
+}
+
 LaserFixInput from_message(const pose2d_t& msg) {
   LaserFixInput in;
   in.utime = msg.utime;
@@ -60,8 +64,7 @@ int run(const std::string& lcm_url, const std::string& robot_path, const std::st
   ServiceRuntime runtime("pose_fusion", lcm_url);
   FusionNode node(config, load_robot_config(robot_path).odometry_noise);
   runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
-    const FusionOutput& pose =
-        node.on_odometry({msg.utime, {msg.x, msg.y, msg.theta}, msg.distance}, monotonic_us());
+    const FusionOutput& pose = node.on_odometry(from_message(msg), monotonic_us());
     report_events(runtime, node.events());
     runtime.publish(config.output_channel, to_message(pose));
     const FusionHealth health = node.health();

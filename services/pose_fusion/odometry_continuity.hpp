@@ -10,6 +10,7 @@
 // grown by what the robot could have done meanwhile, so the next laser fix
 // re-anchors the estimate.
 
+#include "common/odometry_sample.hpp"
 #include "common/se2.hpp"
 
 #include <Eigen/Core>
@@ -26,13 +27,6 @@ struct OdometryContinuityConfig {
   double max_speed = 1.5;        ///< bound on the robot's speed during a seam [m/s]
   double max_yaw_rate = 1.5;     ///< bound on its yaw rate during a seam [rad/s]
   double distance_slack = 1e-6;  ///< distance may shrink this much by rounding [m]
-};
-
-/// One ODOMETRY message as the filter needs it.
-struct OdometrySample {
-  int64_t utime = 0;  ///< [us]
-  Pose2 odom_T_robot;
-  double distance = 0.0;  ///< path length since the odometry service started [m]
 };
 
 enum class OdometryStepKind {

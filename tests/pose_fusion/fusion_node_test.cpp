@@ -27,7 +27,7 @@ LaserFixInput fix_at(int64_t utime, const Pose2& pose, FixStatus status = FixSta
 }
 
 OdometrySample odometry_at(int k, double distance_per_step = 0.005) {
-  return {kT0 + k * kPeriod, Pose2{distance_per_step * k, 0.0, 0.0}, distance_per_step * k};
+  return {kT0 + k * kPeriod, {}, Pose2{distance_per_step * k, 0.0, 0.0}, distance_per_step * k};
 }
 
 int count(const std::vector<NodeEvent>& events, const std::string& counter) {
@@ -138,7 +138,7 @@ TEST(FusionNode, OdometryGapAndRestartAreSeamsCountedSeparately) {
   EXPECT_EQ(count(node.events(), "odometry_gaps"), 1);
   EXPECT_TRUE(logged(node.events(), NodeEvent::Level::kWarn, "ODOMETRY resumed after 2.000 s"));
   EXPECT_EQ(node.on_odometry(odometry_at(201), 20'000).status, FusionStatus::kDegraded);
-  node.on_odometry({kT0 + 202 * kPeriod, Pose2{}, 0.0}, 30'000);  // distance back to 0: a new frame
+  node.on_odometry({kT0 + 202 * kPeriod, {}, Pose2{}, 0.0}, 30'000);  // distance back to 0: a new frame
   EXPECT_EQ(count(node.events(), "odometry_restarts"), 1);
   EXPECT_TRUE(logged(node.events(), NodeEvent::Level::kWarn, "ODOMETRY restarted after 0.010 s"));
 }

@@ -35,7 +35,7 @@ class FusionHarness {
     const Pose2 odom_T_robot = truth_at(odom_start_utime).inverse() * truth_at(utime);
     const double distance =
         std::hypot(kTwist.vx, kTwist.vy) * 1e-6 * static_cast<double>(utime - odom_start_utime);
-    const OdometryStep step = continuity_.next({utime, odom_T_robot, distance});
+    const OdometryStep step = continuity_.next({utime, {}, odom_T_robot, distance});
     last_kind = step.kind;
     const Eigen::Matrix3d q = increment_covariance(step.delta, OdometryNoise{});
     if (step.kind == OdometryStepKind::kContinuous) fusion_.add_odometry(utime, step.delta, q);
@@ -59,8 +59,8 @@ class FusionHarness {
 
 TEST(OdometryContinuity, ContinuousMessagesGiveTheBodyFrameDisplacement) {
   OdometryContinuity c;
-  EXPECT_EQ(c.next({kT0, Pose2{1.0, 0.0, 0.0}, 1.0}).kind, OdometryStepKind::kFirst);
-  const OdometryStep s = c.next({kT0 + kOdomPeriod, Pose2{1.0, 0.01, M_PI / 2}, 1.01});
+  EXPECT_EQ(c.next({kT0, {}, Pose2{1.0, 0.0, 0.0}, 1.0}).kind, OdometryStepKind::kFirst);
+  const OdometryStep s = c.next({kT0 + kOdomPeriod, {}, Pose2{1.0, 0.01, M_PI / 2}, 1.01});
   EXPECT_EQ(s.kind, OdometryStepKind::kContinuous);
   EXPECT_NEAR(s.delta.x, 0.0, 1e-12);
   EXPECT_NEAR(s.delta.y, 0.01, 1e-12);
@@ -70,8 +70,8 @@ TEST(OdometryContinuity, ContinuousMessagesGiveTheBodyFrameDisplacement) {
 
 TEST(OdometryContinuity, DistanceGoingBackIsARestartWithNoDisplacementAndTheUnobservedMotionAsCovariance) {
   OdometryContinuity c;  // bounds 1.5 m/s, 1.5 rad/s
-  c.next({kT0, Pose2{5.0, 4.0, 1.0}, 12.0});
-  const OdometryStep s = c.next({kT0 + 400'000, Pose2{}, 0.0});
+  c.next({kT0, {}, Pose2{5.0, 4.0, 1.0}, 12.0});
+  const OdometryStep s = c.next({kT0 + 400'000, {}, Pose2{}, 0.0});
   EXPECT_EQ(s.kind, OdometryStepKind::kSeam);
   EXPECT_TRUE(s.restarted);
   EXPECT_NEAR(s.gap, 0.4, 1e-12);
@@ -82,8 +82,8 @@ TEST(OdometryContinuity, DistanceGoingBackIsARestartWithNoDisplacementAndTheUnob
 
 TEST(OdometryContinuity, LongGapInOneFrameKeepsTheDisplacementButAddsUncertainty) {
   OdometryContinuity c;
-  c.next({kT0, Pose2{1.0, 0.0, 0.0}, 1.0});
-  const OdometryStep s = c.next({kT0 + 1'500'000, Pose2{2.0, 0.0, 0.0}, 2.0});
+  c.next({kT0, {}, Pose2{1.0, 0.0, 0.0}, 1.0});
+  const OdometryStep s = c.next({kT0 + 1'500'000, {}, Pose2{2.0, 0.0, 0.0}, 2.0});
   EXPECT_EQ(s.kind, OdometryStepKind::kSeam);
   EXPECT_FALSE(s.restarted);
   EXPECT_NEAR(s.delta.x, 1.0, 1e-12);
@@ -92,9 +92,9 @@ TEST(OdometryContinuity, LongGapInOneFrameKeepsTheDisplacementButAddsUncertainty
 
 TEST(OdometryContinuity, TimeGoingBackStartsANewFrameWithoutAStep) {
   OdometryContinuity c;
-  c.next({kT0, Pose2{1.0, 0.0, 0.0}, 1.0});
-  EXPECT_EQ(c.next({kT0 - 5'000, Pose2{}, 0.0}).kind, OdometryStepKind::kBackwards);
-  EXPECT_EQ(c.next({kT0 + 5'000, Pose2{0.001, 0.0, 0.0}, 0.001}).kind, OdometryStepKind::kContinuous);
+  c.next({kT0, {}, Pose2{1.0, 0.0, 0.0}, 1.0});
+  EXPECT_EQ(c.next({kT0 - 5'000, {}, Pose2{}, 0.0}).kind, OdometryStepKind::kBackwards);
+  EXPECT_EQ(c.next({kT0 + 5'000, {}, Pose2{0.001, 0.0, 0.0}, 0.001}).kind, OdometryStepKind::kContinuous);
 }
 
 // The robot drives at ~0.8 m/s; odometry dies at 1 s, a new odometry service
