@@ -11,8 +11,6 @@
 namespace refloc {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
-
 struct ReachedError {
   double xy = 0.0;       ///< [m]
   double heading = 0.0;  ///< [rad]
@@ -25,8 +23,12 @@ TEST(NavigatorClosedLoop, ReachesSixWaypointsWithinTenMillimetresAndHalfADegree)
   NavGoal goal;
   goal.goal_id = 1;
   goal.max_speed = 1.0;
-  goal.waypoints = {{3.0, 0.0, 0.0},         {3.0, 2.0, 90 * kDeg},  {1.0, 3.0, 180 * kDeg},
-                    {-1.0, 1.0, -45 * kDeg}, {0.5, -1.5, 30 * kDeg}, {0.0, 0.0, 0.0}};
+  goal.waypoints = {{3.0, 0.0, 0.0},
+                    {3.0, 2.0, deg_to_rad(90)},
+                    {1.0, 3.0, deg_to_rad(180)},
+                    {-1.0, 1.0, deg_to_rad(-45)},
+                    {0.5, -1.5, deg_to_rad(30)},
+                    {0.0, 0.0, 0.0}};
   nav.set_goal(goal, 0);
 
   std::vector<ReachedError> reached;
@@ -52,7 +54,7 @@ TEST(NavigatorClosedLoop, ReachesSixWaypointsWithinTenMillimetresAndHalfADegree)
   ASSERT_EQ(reached.size(), 6u);
   for (size_t i = 0; i < reached.size(); ++i) {
     EXPECT_LE(reached[i].xy, 0.010) << "waypoint " << i;
-    EXPECT_LE(reached[i].heading, 0.5 * kDeg) << "waypoint " << i;
+    EXPECT_LE(reached[i].heading, deg_to_rad(0.5)) << "waypoint " << i;
   }
   // The robot stays where it arrived once commands are zero.
   plant.advance_to(now + 1'000'000);
@@ -61,7 +63,7 @@ TEST(NavigatorClosedLoop, ReachesSixWaypointsWithinTenMillimetresAndHalfADegree)
   EXPECT_GT(peak_speed, 0.95);  // the long legs reach cruise speed
   RecordProperty("mission_time_s", std::to_string(now * 1e-6));
   std::printf("mission time %.2f s, errors:", now * 1e-6);
-  for (const auto& r : reached) std::printf(" (%.1f mm, %.3f deg)", r.xy * 1e3, r.heading / kDeg);
+  for (const auto& r : reached) std::printf(" (%.1f mm, %.3f deg)", r.xy * 1e3, rad_to_deg(r.heading));
   std::printf("\n");
 }
 

@@ -17,8 +17,6 @@
 namespace refloc {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
-
 TEST(FusedClosedLoop, NoisyDelayedFixesAndSlipStillReachWaypointsWithinFifteenMillimetres) {
   const RobotConfig robot;
   PlantConfig plant_config;
@@ -36,7 +34,8 @@ TEST(FusedClosedLoop, NoisyDelayedFixesAndSlipStillReachWaypointsWithinFifteenMi
 
   NavGoal goal;
   goal.goal_id = 1;
-  goal.waypoints = {{2.0, 0.0, 0.0}, {2.0, 1.5, 90 * kDeg}, {0.0, 1.0, 180 * kDeg}, {0.0, 0.0, 0.0}};
+  goal.waypoints = {
+      {2.0, 0.0, 0.0}, {2.0, 1.5, deg_to_rad(90)}, {0.0, 1.0, deg_to_rad(180)}, {0.0, 0.0, 0.0}};
   nav.set_goal(goal, 0);
 
   std::deque<std::pair<int64_t, Pose2>> truth;
@@ -83,9 +82,9 @@ TEST(FusedClosedLoop, NoisyDelayedFixesAndSlipStillReachWaypointsWithinFifteenMi
   ASSERT_EQ(errors_xy.size(), goal.waypoints.size());
   std::printf("mission %.1f s, %d fixes gated out; true errors:", now * 1e-6, rejected);
   for (size_t i = 0; i < errors_xy.size(); ++i) {
-    std::printf(" (%.1f mm, %.2f deg)", errors_xy[i] * 1e3, errors_heading[i] / kDeg);
+    std::printf(" (%.1f mm, %.2f deg)", errors_xy[i] * 1e3, rad_to_deg(errors_heading[i]));
     EXPECT_LE(errors_xy[i], 0.015) << "waypoint " << i;
-    EXPECT_LE(errors_heading[i], 1.0 * kDeg) << "waypoint " << i;
+    EXPECT_LE(errors_heading[i], deg_to_rad(1.0)) << "waypoint " << i;
   }
   std::printf("\n");
   EXPECT_LE(rejected, 2);  // 99.9 % gate: consistent fixes pass
