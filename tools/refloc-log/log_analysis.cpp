@@ -2,6 +2,7 @@
 
 #include "log_reader.hpp"
 
+#include <fmt/format.h>
 #include <refloc/laser_scan_t.hpp>
 
 #include <memory>
@@ -100,6 +101,23 @@ LogExportResult export_log(const std::string& path, const LogSummary& summary,
     result.csv_files = csv->files();
   }
   return result;
+}
+
+std::string format_export_counts(const LogExportRequest& request, const LogExportResult& exported) {
+  std::string out;
+  if (!request.jsonl_path.empty()) {
+    out += fmt::format("{}: {} lines ({} not decodable) from {} channels\n", request.jsonl_path,
+                       exported.jsonl.written, exported.jsonl.undecoded, exported.channels.size());
+  }
+  for (const auto& [channel, file] : exported.csv_files)
+    out += fmt::format("{}: channel {}\n", file, channel);
+  if (!request.csv_path.empty()) {
+    out += fmt::format("CSV: {} rows, {} not decodable (skipped), {} of a changed type (skipped)\n",
+                       exported.csv.written, exported.csv.undecoded, exported.csv.type_changed);
+  }
+  if ((!request.csv_path.empty() || !request.jsonl_path.empty()) && exported.channels.empty())
+    out += "refloc-log: warning: no channel of the log matches --channel\n";
+  return out;
 }
 
 }  // namespace refloc

@@ -54,4 +54,7 @@ struct LogExportResult {
 LogExportResult export_log(const std::string& path, const LogSummary& summary,
                            const LogExportRequest& request, const MessageDecoder& decoder);
 
+/// What the export wrote (lines, files, rows skipped), and a warning when no channel matched.
+std::string format_export_counts(const LogExportRequest& request, const LogExportResult& exported);
+
 }  // namespace refloc

@@ -209,4 +209,17 @@ nlohmann::ordered_json scan_continuity_to_json(const ScanContinuityReport& r) {
           {"stages", std::move(stages)},      {"services", std::move(services)}};
 }
 
+std::string format_log_analysis(const LogAnalysis& analysis, bool json) {
+  if (json) {
+    nlohmann::ordered_json doc = log_summary_to_json(analysis.summary);
+    if (analysis.latency) doc["latency"] = latency_report_to_json(*analysis.latency);
+    if (analysis.scans) doc["scans"] = scan_continuity_to_json(*analysis.scans);
+    return doc.dump(2) + "\n";
+  }
+  std::string out = format_log_summary(analysis.summary);
+  if (analysis.latency) out += format_latency_report(*analysis.latency);
+  if (analysis.scans) out += format_scan_continuity(*analysis.scans);
+  return out;
+}
+
 }  // namespace refloc

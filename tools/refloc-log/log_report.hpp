@@ -2,6 +2,7 @@
 // Text and JSON output of refloc-log: the channel summary with gaps, and the
 // pipeline latency report.
 
+#include "log_analysis.hpp"
 #include "log_statistics.hpp"
 #include "pipeline_latency.hpp"
 #include "scan_continuity.hpp"
@@ -24,5 +25,9 @@ nlohmann::ordered_json latency_report_to_json(const LatencyReport& report);
 /// service table from HEARTBEAT (messages, decode errors, worst handler p99, restarts).
 std::string format_scan_continuity(const ScanContinuityReport& report);
 nlohmann::ordered_json scan_continuity_to_json(const ScanContinuityReport& report);
+
+/// Everything analyze_log found: the summary, then latency and scans when asked; as
+/// text, or as one JSON document (summary keys, "latency", "scans") when json.
+std::string format_log_analysis(const LogAnalysis& analysis, bool json);
 
 }  // namespace refloc

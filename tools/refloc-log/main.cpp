@@ -34,77 +34,63 @@ int report_load_test(const refloc::LogAnalysis& analysis, const std::string& sam
   return checks.pass() ? 0 : 1;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"Summarize an LCM log, export channels to CSV/JSON lines, measure scan-to-pose latency"};
+struct CommandLine {
   std::string log_path;
   refloc::LogAnalysisOptions options;
   refloc::LogExportRequest request;
   bool json = false;
-  app.add_option("log", log_path, "LCM log file (lcm-logger output)")->required();
+  std::string load_samples, load_report;
+};
+
+void add_options(CLI::App& app, CommandLine& c) {
+  app.add_option("log", c.log_path, "LCM log file (lcm-logger output)")->required();
   app.add_option(
-      "--channel,-c", request.channel_patterns,
+      "--channel,-c", c.request.channel_patterns,
       "channel to export; a regular expression matching the whole name; repeatable (default: all)");
-  app.add_option("--csv", request.csv_path,
+  app.add_option("--csv", c.request.csv_path,
                  "write CSV here; with several channels one file each: <stem>_<CHANNEL><ext>");
-  app.add_option("--jsonl", request.jsonl_path, "write JSON lines here (all selected channels, every field)");
-  app.add_option("--gap-threshold", options.gap_threshold_s,
+  app.add_option("--jsonl", c.request.jsonl_path,
+                 "write JSON lines here (all selected channels, every field)");
+  app.add_option("--gap-threshold", c.options.gap_threshold_s,
                  "list gaps between messages longer than this [s]")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
-  app.add_option("--max-gaps", options.max_gaps, "list at most this many gaps")->capture_default_str();
+  app.add_option("--max-gaps", c.options.max_gaps, "list at most this many gaps")->capture_default_str();
   app.add_flag(
-      "--latency", options.latency,
+      "--latency", c.options.latency,
       "scan-to-pose latency: LMS100_SCAN -> REFLECTORS -> REFLECTOR_MATCHES -> LASER_POSE matched by utime");
-  app.add_option("--pipeline", options.pipeline_channels, "pipeline channels for --latency, comma separated")
+  app.add_option("--pipeline", c.options.pipeline_channels,
+                 "pipeline channels for --latency, comma separated")
       ->delimiter(',')
       ->capture_default_str();
   app.add_flag(
-      "--scans", options.scans,
+      "--scans", c.options.scans,
       "dropped scans: LMS100_SCAN counter gaps, scans reaching REFLECTORS/REFLECTOR_MATCHES/LASER_POSE, "
       "and every service's HEARTBEAT health (decode errors, worst handler p99, restarts)");
-  app.add_flag("--json", json, "print the summary (and latency) as one JSON document");
-  std::string load_samples, load_report;
-  app.add_option("--load-test", load_samples,
+  app.add_flag("--json", c.json, "print the summary (and latency) as one JSON document");
+  app.add_option("--load-test", c.load_samples,
                  "judge a load test: this file holds deploy/load_test.sh's /proc samples; implies --latency "
                  "--scans; prints the report (JSON with --json), exit 0 pass, 1 fail");
-  app.add_option("--report", load_report, "with --load-test: also write the JSON report to this file");
-  CLI11_PARSE(app, argc, argv);
-  if (!load_samples.empty()) options.latency = options.scans = true;
+  app.add_option("--report", c.load_report, "with --load-test: also write the JSON report to this file");
+}
 
-  return refloc::guarded_main("refloc-log", [&] {
-    const refloc::MessageDecoder decoder;
-    const auto analysis = refloc::analyze_log(log_path, options, decoder);
-    if (!load_samples.empty()) return report_load_test(analysis, load_samples, load_report, json);
-    const auto exported = refloc::export_log(log_path, analysis.summary, request, decoder);
-    if (json) {
-      nlohmann::ordered_json doc = refloc::log_summary_to_json(analysis.summary);
-      if (analysis.latency) doc["latency"] = refloc::latency_report_to_json(*analysis.latency);
-      if (analysis.scans) doc["scans"] = refloc::scan_continuity_to_json(*analysis.scans);
-      std::printf("%s\n", doc.dump(2).c_str());
-    } else {
-      std::printf("%s", refloc::format_log_summary(analysis.summary).c_str());
-      if (analysis.latency) std::printf("%s", refloc::format_latency_report(*analysis.latency).c_str());
-      if (analysis.scans) std::printf("%s", refloc::format_scan_continuity(*analysis.scans).c_str());
-    }
-    if (!request.jsonl_path.empty()) {
-      std::fprintf(stderr, "%s: %lld lines (%lld not decodable) from %zu channels\n",
-                   request.jsonl_path.c_str(), static_cast<long long>(exported.jsonl.written),
-                   static_cast<long long>(exported.jsonl.undecoded), exported.channels.size());
-    }
-    for (const auto& [channel, file] : exported.csv_files) {
-      std::fprintf(stderr, "%s: channel %s\n", file.c_str(), channel.c_str());
-    }
-    if (!request.csv_path.empty()) {
-      std::fprintf(stderr, "CSV: %lld rows, %lld not decodable (skipped), %lld of a changed type (skipped)\n",
-                   static_cast<long long>(exported.csv.written),
-                   static_cast<long long>(exported.csv.undecoded),
-                   static_cast<long long>(exported.csv.type_changed));
-    }
-    if ((!request.csv_path.empty() || !request.jsonl_path.empty()) && exported.channels.empty()) {
-      std::fprintf(stderr, "refloc-log: warning: no channel of the log matches --channel\n");
-    }
-    return 0;
-  });
+int run(CommandLine c) {
+  if (!c.load_samples.empty()) c.options.latency = c.options.scans = true;
+  const refloc::MessageDecoder decoder;
+  const auto analysis = refloc::analyze_log(c.log_path, c.options, decoder);
+  if (!c.load_samples.empty()) return report_load_test(analysis, c.load_samples, c.load_report, c.json);
+  const auto exported = refloc::export_log(c.log_path, analysis.summary, c.request, decoder);
+  std::printf("%s", refloc::format_log_analysis(analysis, c.json).c_str());
+  std::fprintf(stderr, "%s", refloc::format_export_counts(c.request, exported).c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Summarize an LCM log, export channels to CSV/JSON lines, measure scan-to-pose latency"};
+  CommandLine command_line;
+  add_options(app, command_line);
+  CLI11_PARSE(app, argc, argv);
+  return refloc::guarded_main("refloc-log", [&] { return run(command_line); });
 }
