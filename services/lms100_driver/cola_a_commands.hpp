@@ -17,8 +17,8 @@ struct ScanConfig {
            start_angle_1e4deg == o.start_angle_1e4deg && stop_angle_1e4deg == o.stop_angle_1e4deg;
   }
 
-  uint32_t frequency_1e2hz = 5000;    ///< [1/100 Hz]
-  uint32_t resolution_1e4deg = 5000;  ///< [1/10000 deg]
+  uint32_t frequency_1e2hz = 5000;    ///< [Hz x 100]
+  uint32_t resolution_1e4deg = 5000;  ///< [deg x 1e4]
   int32_t start_angle_1e4deg = -450000;
   int32_t stop_angle_1e4deg = 2250000;
 };

@@ -5,9 +5,9 @@ namespace refloc {
 std::string frame_cola_a(const std::string& payload) {
   std::string framed;
   framed.reserve(payload.size() + 2);
-  framed.push_back(kColaStx);
+  framed.push_back(cola::kStx);
   framed += payload;
-  framed.push_back(kColaEtx);
+  framed.push_back(cola::kEtx);
   return framed;
 }
 

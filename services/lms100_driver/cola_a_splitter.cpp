@@ -19,7 +19,7 @@ void ColaASplitter::feed(const uint8_t* data, size_t size) {
 bool ColaASplitter::next(std::string& payload) {
   while (scan_pos_ < pending_.size()) {
     const auto byte = static_cast<uint8_t>(pending_[scan_pos_++]);
-    if (byte == kStx) {
+    if (byte == static_cast<uint8_t>(cola::kStx)) {
       if (in_frame_ || discarding_) {
         // The previous frame lost its ETX; the STX is the only trustworthy sync point.
         if (in_frame_) ++resyncs_;
@@ -30,14 +30,14 @@ bool ColaASplitter::next(std::string& payload) {
       continue;
     }
     if (discarding_) {
-      if (byte == kEtx) discarding_ = false;
+      if (byte == static_cast<uint8_t>(cola::kEtx)) discarding_ = false;
       continue;
     }
     if (!in_frame_) {
       ++garbage_bytes_;
       continue;
     }
-    if (byte == kEtx) {
+    if (byte == static_cast<uint8_t>(cola::kEtx)) {
       in_frame_ = false;
       payload.swap(frame_);
       frame_.clear();

@@ -6,6 +6,8 @@
 // The splitter survives split reads, several telegrams per read, junk between
 // telegrams, a frame cut short by a new STX, and frames that never end.
 
+#include "common/cola_a_framing.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -15,7 +17,7 @@ namespace refloc {
 class ColaASplitter {
  public:
   /// max_frame_bytes: payload longer than this is dropped (a lost ETX must not grow memory).
-  explicit ColaASplitter(size_t max_frame_bytes = 65536);
+  explicit ColaASplitter(size_t max_frame_bytes = cola::kMaxTelegramBytes);
 
   /// Appends received bytes.
   void feed(const uint8_t* data, size_t size);
@@ -31,9 +33,6 @@ class ColaASplitter {
   void reset();
 
  private:
-  static constexpr uint8_t kStx = 0x02;
-  static constexpr uint8_t kEtx = 0x03;
-
   size_t max_frame_bytes_;
   std::string pending_;  ///< received bytes not yet scanned
   size_t scan_pos_ = 0;  ///< first byte of pending_ not yet examined

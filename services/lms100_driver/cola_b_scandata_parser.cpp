@@ -1,5 +1,7 @@
 #include "lms100_driver/cola_b_scandata_parser.hpp"
 
+#include "common/cola_a_framing.hpp"
+
 #include <cstring>
 #include <string>
 
@@ -87,17 +89,18 @@ bool read_string(BigEndianReader& r, std::string& out) {
 }  // namespace
 
 ParseResult unframe_cola_b(std::string_view frame, std::string_view& payload) {
-  if (frame.size() < 9 || frame.substr(0, 4) != std::string_view("\x02\x02\x02\x02", 4)) {
+  if (frame.size() < cola::kColaBOverheadBytes ||
+      frame.substr(0, cola::kColaBMagic.size()) != cola::kColaBMagic) {
     return ParseResult::failure("CoLa-B frame: no 02020202 magic");
   }
-  BigEndianReader header(frame.substr(4, 4));
+  BigEndianReader header(frame.substr(cola::kColaBMagic.size(), 4));
   uint32_t length = 0;
   header.u32(length);
-  if (length != frame.size() - 9) {
+  if (length != frame.size() - cola::kColaBOverheadBytes) {
     return ParseResult::failure("CoLa-B frame: length field " + std::to_string(length) + " but " +
-                                std::to_string(frame.size() - 9) + " payload bytes");
+                                std::to_string(frame.size() - cola::kColaBOverheadBytes) + " payload bytes");
   }
-  payload = frame.substr(8, length);
+  payload = frame.substr(cola::kColaBHeaderBytes, length);
   uint8_t checksum = 0;
   for (const char c : payload) checksum ^= static_cast<uint8_t>(c);
   if (checksum != static_cast<uint8_t>(frame.back()))
@@ -122,7 +125,7 @@ ParseResult parse_lmd_scandata_cola_b(std::string_view payload, LmdScanData& out
             r.u32(out.time_of_transmission_us) && r.u8(out.digital_inputs[0]) &&
             r.u8(out.digital_inputs[1]) && r.u8(out.digital_outputs[0]) && r.u8(out.digital_outputs[1]) &&
             r.u16(out.reserved_layer_angle) && r.u32(out.scan_frequency_1e2hz) &&
-            r.u32(out.measurement_frequency_100hz);
+            r.u32(out.measurement_frequency_1e1khz);
   if (!ok) return fail_at(field, r);
   field = "encoders";
   if (!r.u16(n) || n > 8) return fail_at(field, r);

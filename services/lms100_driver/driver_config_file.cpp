@@ -44,4 +44,12 @@ DriverServiceConfig parse_driver_config(const JsonConfig& file) {
   return c;
 }
 
+DriverServiceConfig load_driver_config_file(const std::string& path) {
+  if (path.empty()) return {};
+  const JsonConfig file = JsonConfig::load_file(path);
+  DriverServiceConfig config = parse_driver_config(file);
+  file.reject_unknown_keys();
+  return config;
+}
+
 }  // namespace refloc

@@ -14,8 +14,8 @@ struct LmdChannel {
   std::string name;    ///< 5 characters, e.g. "DIST1", "RSSI1"
   float scale = 1.0F;  ///< raw * scale + offset
   float offset = 0.0F;
-  int32_t start_angle_1e4deg = 0;  ///< sensor angle of value 0 [1/10000 deg]
-  uint32_t step_1e4deg = 0;        ///< [1/10000 deg]
+  int32_t start_angle_1e4deg = 0;  ///< sensor angle of value 0 [deg x 1e4]
+  uint32_t step_1e4deg = 0;        ///< [deg x 1e4]
   std::vector<uint16_t> values;    ///< sized from the telegram's own count field
 };
 
@@ -58,9 +58,9 @@ struct LmdScanData {
   uint32_t time_of_transmission_us = 0;
   uint32_t digital_inputs[2] = {0, 0};
   uint32_t digital_outputs[2] = {0, 0};
-  uint32_t reserved_layer_angle = 0;         ///< 0 on LMS1xx
-  uint32_t scan_frequency_1e2hz = 0;         ///< 5000 = 50 Hz
-  uint32_t measurement_frequency_100hz = 0;  ///< beam rate / 100 Hz (360 = 36 kHz)
+  uint32_t reserved_layer_angle = 0;          ///< 0 on LMS1xx
+  uint32_t scan_frequency_1e2hz = 0;          ///< 5000 = 50 Hz
+  uint32_t measurement_frequency_1e1khz = 0;  ///< beam rate [kHz x 10] (360 = 36 kHz)
   std::vector<LmdEncoder> encoders;
   std::vector<LmdChannel> channels16;
   std::vector<LmdChannel> channels8;

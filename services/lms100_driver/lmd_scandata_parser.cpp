@@ -94,7 +94,7 @@ class LmdParser {
 
   bool frequency_block() {
     return u32("scan frequency", out_.scan_frequency_1e2hz) &&
-           u32("measurement frequency", out_.measurement_frequency_100hz);
+           u32("measurement frequency", out_.measurement_frequency_1e1khz);
   }
 
   bool encoder_block() {

@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "common/cola_a_framing.hpp"
 #include "common/laser_scan.hpp"
 #include "lms100_driver/cola_a_commands.hpp"
 #include "lms100_driver/cola_a_splitter.hpp"
@@ -39,7 +40,7 @@ struct Lms100SessionConfig {
   double backoff_max_s = 5.0;           ///< [s]
   double stop_reply_timeout_s = 0.5;    ///< for the polite sEN 0 / LMCstopmeas on stop [s]
   uint32_t max_parse_error_streak = 5;  ///< consecutive bad scans → reconnect
-  size_t max_frame_bytes = 65536;
+  size_t max_frame_bytes = cola::kMaxTelegramBytes;
   SensorClockFilterConfig clock;
 
   /// Nominal scan period from the requested frequency [s].
@@ -94,8 +95,18 @@ class Lms100Session {
  private:
   enum class Wait { kReply, kScan, kTimeout, kStopped, kClosed, kSopasError, kParseErrors };
 
+  using ReplyCheck = std::function<ParseResult(const std::string&)>;
+
   /// One connection from connect to failure or stop; returns why it ended.
   std::string run_connection();
+  /// Login, scan and output configuration, start of measurement; "" or why it failed.
+  std::string configure_sensor();
+  /// Polls STlms until 7 (ready) or ready_timeout_s; "" or why it failed.
+  std::string wait_until_ready(const std::string& where);
+  /// Receives scans until a scan timeout, a link failure or a stop; returns why it ended.
+  std::string stream_scans();
+  /// transact() and check the reply; false with why on no reply or a failed check.
+  bool command(const std::string& request, const ReplyCheck& check, std::string& reply, std::string& why);
   /// Sends request and waits for its reply (scans meanwhile go to the scan path).
   Wait transact(const std::string& request, double timeout_s, std::string& reply, std::string& why);
   /// Reads and dispatches frames until a reply to request (if any), a scan (if return_on_scan),

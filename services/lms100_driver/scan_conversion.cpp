@@ -1,12 +1,13 @@
 #include "lms100_driver/scan_conversion.hpp"
 
+#include "common/angles.hpp"
+
 #include <cmath>
 #include <string>
 
 namespace refloc {
 
 namespace {
-constexpr double kDegToRad = M_PI / 180.0;
 constexpr uint16_t kNoEchoCode = 0;
 constexpr uint16_t kDazzledCode = 1;
 constexpr float kDazzledRange = 0.001F;  // laser_scan.hpp's marker for code 1
@@ -17,7 +18,7 @@ ParseResult to_laser_scan(const LmdScanData& data, LaserScan& out) {
   if (dist == nullptr) return ParseResult::failure("LMDscandata has no DIST1 channel");
   if (dist->step_1e4deg == 0) return ParseResult::failure("DIST1 angular step is 0");
   if (data.scan_frequency_1e2hz == 0) return ParseResult::failure("scan frequency is 0");
-  if (data.measurement_frequency_100hz == 0) return ParseResult::failure("measurement frequency is 0");
+  if (data.measurement_frequency_1e1khz == 0) return ParseResult::failure("measurement frequency is 0");
   // Corrupt factors must not turn into inf/NaN ranges or out-of-range integer casts.
   const auto sane = [](const LmdChannel& c) {
     return std::isfinite(c.scale) && std::isfinite(c.offset) && std::fabs(c.scale) <= 1e4F &&
@@ -41,7 +42,7 @@ ParseResult to_laser_scan(const LmdScanData& data, LaserScan& out) {
   out.serial_number = data.serial_number;
   out.start_angle = (dist->start_angle_1e4deg * 1e-4 + kLms100AngleShiftDeg) * kDegToRad;
   out.angle_increment = dist->step_1e4deg * 1e-4 * kDegToRad;
-  out.time_increment = 1.0 / (data.measurement_frequency_100hz * 100.0);
+  out.time_increment = 1.0 / (data.measurement_frequency_1e1khz * 100.0);
   out.scan_period = 100.0 / data.scan_frequency_1e2hz;
 
   const size_t n = dist->values.size();

@@ -2,6 +2,9 @@
 
 #include "lms100_emulator/emulator_config_loader.hpp"
 
+#include <poll.h>
+#include <unistd.h>
+
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -90,6 +93,26 @@ bool apply_fault_command(const std::string& line, FaultInjector& faults, std::st
   }
   message = "ok: " + describe(faults.settings());
   return true;
+}
+
+void run_fault_commands(int fd, FaultInjector& faults, const std::atomic<bool>& stop,
+                        const FaultCommandReport& report) {
+  std::string pending;
+  while (!stop.load()) {
+    pollfd p{fd, POLLIN, 0};
+    if (::poll(&p, 1, 200) <= 0) continue;
+    char buffer[256];
+    const ssize_t n = ::read(fd, buffer, sizeof(buffer));
+    if (n <= 0) return;
+    pending.append(buffer, static_cast<size_t>(n));
+    for (size_t eol; (eol = pending.find('\n')) != std::string::npos; pending.erase(0, eol + 1)) {
+      const std::string line = pending.substr(0, eol);
+      if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+      std::string message;
+      const bool accepted = apply_fault_command(line, faults, message);
+      report(accepted, message);
+    }
+  }
 }
 
 }  // namespace refloc

@@ -1,5 +1,7 @@
 #include "lms100_emulator/fault_injection.hpp"
 
+#include "common/cola_a_framing.hpp"
+
 #include <algorithm>
 #include <utility>
 
@@ -27,7 +29,7 @@ void append_junk_bytes(size_t count, std::mt19937& rng, std::string& out) {
   std::uniform_int_distribution<int> byte(0, 255);
   for (size_t i = 0; i < count; ++i) {
     int b = byte(rng);
-    if (b == 0x02) b = 0x03;  // a stray ETX is fine junk; a stray STX would open a frame
+    if (b == cola::kStx) b = cola::kEtx;  // a stray ETX is fine junk; a stray STX would open a frame
     out.push_back(static_cast<char>(b));
   }
 }

@@ -66,7 +66,7 @@ void encode_lmd_scandata(const LmdTelegramHeader& header, const LmdBeamLayout& l
   append_field(out, header.digital_outputs[1]);
   append_field(out, header.reserved);
   append_field(out, header.scan_frequency_1e2hz);
-  append_field(out, header.measurement_frequency_100hz);
+  append_field(out, header.measurement_frequency_1e1khz);
   append_field(out, 0);  // number of encoders: the LMS100 has no encoder input in use
 
   // An empty scan (output range outside the scan area) still announces its RSSI channel.

@@ -30,10 +30,10 @@ struct LmdTelegramHeader {
   uint32_t time_since_startup_us = 0;    ///< device clock at beam 0 (wraps)
   uint32_t time_of_transmission_us = 0;  ///< device clock when sent (wraps)
   uint32_t digital_inputs[2] = {0, 0};
-  uint32_t digital_outputs[2] = {7, 0};        ///< real ASCII LMS111 telegrams show "7 0"
-  uint32_t reserved = 0;                       ///< layer angle on other models, 0 on LMS1xx
-  uint32_t scan_frequency_1e2hz = 5000;        ///< 5000 = 50 Hz, 2500 = 25 Hz
-  uint32_t measurement_frequency_100hz = 360;  ///< 360 -> 36 kHz beam rate
+  uint32_t digital_outputs[2] = {7, 0};         ///< real ASCII LMS111 telegrams show "7 0"
+  uint32_t reserved = 0;                        ///< layer angle on other models, 0 on LMS1xx
+  uint32_t scan_frequency_1e2hz = 5000;         ///< 5000 = 50 Hz, 2500 = 25 Hz
+  uint32_t measurement_frequency_1e1khz = 360;  ///< beam rate [kHz x 10] (360 = 36 kHz)
 };
 
 /// Which optional parts follow the DIST1 channel (sWN LMDscandatacfg, §2.2).
@@ -49,8 +49,8 @@ struct LmdOutputOptions {
 
 /// Angular layout shared by every channel of the telegram.
 struct LmdBeamLayout {
-  int32_t start_angle_1e4deg = -450000;  ///< sensor angle of beam 0 [1/10000 deg]
-  uint32_t step_1e4deg = 5000;           ///< [1/10000 deg]
+  int32_t start_angle_1e4deg = -450000;  ///< sensor angle of beam 0 [deg x 1e4]
+  uint32_t step_1e4deg = 5000;           ///< [deg x 1e4]
 };
 
 /// Replaces out with the payload (no STX/ETX) of one LMDscandata telegram with

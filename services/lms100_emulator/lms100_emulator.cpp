@@ -1,8 +1,8 @@
 #include "lms100_emulator/lms100_emulator.hpp"
 
 #include "common/clock.hpp"
-#include "lms100_driver/cola_a_splitter.hpp"
-#include "lms100_emulator/lmd_scandata_encoder.hpp"
+#include "common/cola_a_framing.hpp"
+#include "lms100_emulator/emulator_server.hpp"
 #include "lms100_emulator/tcp_socket.hpp"
 
 #include <fcntl.h>
@@ -21,63 +21,8 @@
 namespace refloc {
 
 namespace {
-constexpr double kDegToRad = M_PI / 180.0;
-constexpr uint32_t kMeasurementFrequency100Hz = 360;  // 36 kHz beam rate on every LMS1xx
-constexpr double kTimeIncrementS = 1.0 / (kMeasurementFrequency100Hz * 100.0);
 constexpr int64_t kMaxWaitUs = 50000;  // re-check the fault knobs at least this often
 }  // namespace
-
-struct Lms100Emulator::Server {
-  Server(const Lms100EmulatorConfig& c, ScanSource& s, FaultInjector& f, int wake,
-         std::atomic<bool>& stop_flag)
-      : config(c),
-        source(s),
-        faults(f),
-        wake_fd(wake),
-        stop(stop_flag),
-        device(c.device),
-        telegram_counter(c.first_telegram_counter),
-        rng(c.random_seed) {}
-
-  void run();
-  uint64_t device_now() const { return static_cast<uint64_t>(monotonic_us() - power_up_mono_us); }
-  void accept_new_client();
-  void read_client();
-  void handle_request(const std::string& request);
-  void emit_scan(const ScanSlot& slot, bool stream);
-  void send_frame(const std::string& body, bool is_scan);
-  void write_out(const std::string& bytes);
-  void flush_merged();
-  void disconnect();
-  void apply_faults(int64_t now_mono);
-
-  const Lms100EmulatorConfig& config;
-  ScanSource& source;
-  FaultInjector& faults;
-  int wake_fd;
-  std::atomic<bool>& stop;
-
-  Lms100Device device;
-  ColaASplitter splitter;
-  int listen_fd = -1;
-  int client_fd = -1;
-  int64_t power_up_mono_us = 0;
-  int64_t power_up_utime = 0;
-  uint16_t telegram_counter;
-  bool stream_was_enabled = false;
-  int stream_telegrams = 0;
-  std::mt19937 rng;
-  FaultSettings settings;
-  int64_t stalled_until_mono = 0;
-  int merged_count = 0;
-
-  std::string request, reply, body, framed, merge_buffer, stall_buffer;
-  std::vector<uint16_t> dist_mm, rssi;
-  std::vector<size_t> cuts;
-
-  std::mutex stats_mutex;
-  Lms100EmulatorStats stats;
-};
 
 void Lms100Emulator::Server::run() {
   pollfd fds[3];
@@ -87,7 +32,10 @@ void Lms100Emulator::Server::run() {
     const auto complete_delay = static_cast<uint64_t>(
         std::llround((device.full_scan_beams() * kTimeIncrementS + config.processing_delay_s) * 1e6));
     ScanSlot slot;
-    while (device.scheduler().pop_due_scan(device_now(), complete_delay, slot)) emit_scan(slot, true);
+    // stop is checked per scan: a renderer slower than the scan period (a Debug build) would
+    // otherwise always have another scan due and never see it.
+    while (!stop.load() && device.scheduler().pop_due_scan(device_now(), complete_delay, slot))
+      emit_scan(slot, true);
 
     int64_t wait_us = kMaxWaitUs;
     const uint64_t now_dev = device_now();
@@ -141,7 +89,7 @@ void Lms100Emulator::Server::accept_new_client() {
   disconnect();  // the new client replaces the old one
   client_fd = fd;
   configure_client_socket(client_fd, config.send_timeout_ms);
-  splitter.reset();
+  request_reader.reset();
   std::lock_guard<std::mutex> lock(stats_mutex);
   ++stats.clients_accepted;
 }
@@ -166,8 +114,8 @@ void Lms100Emulator::Server::read_client() {
     return;
   }
   if (n < 0) return;
-  splitter.feed(buffer, static_cast<size_t>(n));
-  while (client_fd >= 0 && splitter.next(request)) handle_request(request);
+  request_reader.feed(buffer, static_cast<size_t>(n));
+  while (client_fd >= 0 && request_reader.next(request)) handle_request(request);
 }
 
 void Lms100Emulator::Server::handle_request(const std::string& payload) {
@@ -193,78 +141,15 @@ void Lms100Emulator::Server::handle_request(const std::string& payload) {
   if (settings.duplicate_replies && client_fd >= 0) send_frame(reply, false);
 }
 
-void Lms100Emulator::Server::emit_scan(const ScanSlot& slot, bool stream) {
-  if (client_fd < 0) return;
-  const LmdDataConfig& data = device.data_config();
-  if (stream) {
-    if (!device.stream_enabled()) return;
-    if (data.output_interval > 1 && slot.scan_counter % data.output_interval != 0) return;
-    if (faults.take_drop()) {
-      std::lock_guard<std::mutex> lock(stats_mutex);
-      ++stats.scans_dropped;
-      return;
-    }
-  }
-  const OutputBeams beams = device.output_beams();
-  const auto first_beam_offset_us =
-      static_cast<uint64_t>(std::llround(beams.first_index * kTimeIncrementS * 1e6));
-
-  ScanRequest scan;
-  scan.first_beam_sensor_us = slot.start_us + first_beam_offset_us;
-  scan.first_beam_utime = power_up_utime + static_cast<int64_t>(scan.first_beam_sensor_us);
-  scan.time_increment_s = kTimeIncrementS;
-  scan.num_beams = beams.count;
-  // Sensor angles run -45..225 deg with 90 deg straight ahead; the laser frame has 0 ahead.
-  scan.start_angle_rad = (beams.start_angle_1e4deg * 1e-4 - 90.0) * kDegToRad;
-  scan.angle_increment_rad = beams.step_1e4deg * 1e-4 * kDegToRad;
-  scan.scan_counter = slot.scan_counter;
-  scan.rssi_bits = data.rssi_enabled ? (data.rssi_16bit ? 16 : 8) : 0;
-  dist_mm.assign(static_cast<size_t>(beams.count), 0);
-  rssi.assign(static_cast<size_t>(beams.count), 0);
-  if (source) source(scan, dist_mm, rssi);
-
-  LmdTelegramHeader header;
-  header.is_stream_event = stream;
-  header.serial_number = device.config().serial_number;
-  header.device_status[0] = (stream && stream_telegrams < config.startup_status_scans) ? 1 : 0;
-  header.telegram_counter = telegram_counter;
-  header.scan_counter = slot.scan_counter;
-  header.time_since_startup_us = static_cast<uint32_t>(config.power_up_clock_us + scan.first_beam_sensor_us);
-  header.time_of_transmission_us = static_cast<uint32_t>(config.power_up_clock_us + slot.complete_us);
-  header.scan_frequency_1e2hz = device.scan_frequency_1e2hz();
-  header.measurement_frequency_100hz = kMeasurementFrequency100Hz;
-
-  LmdOutputOptions options;
-  options.rssi_bits = scan.rssi_bits;
-  options.send_device_name = data.device_name;
-  options.device_name = device.config().location_name;
-  options.send_comment = data.comment;
-  options.send_time_info = data.time_info;
-  options.time_info = calendar_time_from_epoch_us(
-      config.rtc_from_host_clock ? static_cast<uint64_t>(scan.first_beam_utime) : scan.first_beam_sensor_us);
-  LmdBeamLayout layout;
-  layout.start_angle_1e4deg = beams.start_angle_1e4deg;
-  layout.step_1e4deg = beams.step_1e4deg;
-  encode_lmd_scandata(header, layout, dist_mm.data(), rssi.data(), dist_mm.size(), options, body);
-
-  telegram_counter = static_cast<uint16_t>(telegram_counter + 1);
-  if (stream) {
-    ++stream_telegrams;
-    std::lock_guard<std::mutex> lock(stats_mutex);
-    ++stats.scan_telegrams_sent;
-  }
-  send_frame(body, stream);
-}
-
 void Lms100Emulator::Server::send_frame(const std::string& payload, bool is_scan) {
   if (client_fd < 0) return;
   framed.clear();
   if (settings.junk_bytes_between_telegrams > 0) {
     append_junk_bytes(static_cast<size_t>(settings.junk_bytes_between_telegrams), rng, framed);
   }
-  framed.push_back('\x02');
+  framed.push_back(cola::kStx);
   framed.append(payload);
-  framed.push_back('\x03');
+  framed.push_back(cola::kEtx);
 
   if (is_scan && faults.take_reset_mid_telegram()) {
     flush_merged();

@@ -1,5 +1,6 @@
 #include "world_renderer/lms100_error_model.hpp"
 
+#include "common/angles.hpp"
 #include "common/json_config.hpp"
 
 #include <algorithm>
@@ -7,8 +8,6 @@
 
 namespace refloc::sim {
 namespace {
-
-constexpr double kDegToRad = M_PI / 180.0;
 
 double incidence_of(double cos_incidence) { return std::acos(std::clamp(cos_incidence, 0.0, 1.0)); }
 

@@ -1,5 +1,6 @@
 #include "world_renderer/scan_renderer.hpp"
 
+#include "common/angles.hpp"
 #include "common/json_config.hpp"
 
 #include <algorithm>
@@ -65,7 +66,6 @@ int32_t rssi_for_bits(double rssi16, int rssi_bits) {
 }
 
 ScanRenderConfig parse_scan_render_config(const JsonConfig& config, const std::string& p) {
-  constexpr double kDegToRad = M_PI / 180.0;
   ScanRenderConfig c;
   ScanGeometry& g = c.geometry;
   g.num_beams = static_cast<int>(config.integer(p + "/num_beams", g.num_beams, 1, 10000));

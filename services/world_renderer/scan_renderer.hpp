@@ -3,6 +3,7 @@
 // cast at its own time from the sensor pose at that time, so a moving robot's
 // scan is skewed exactly as a real one (541 beams over 15 ms at 50 Hz).
 
+#include "common/angles.hpp"
 #include "common/laser_scan.hpp"
 #include "common/se2.hpp"
 #include "world_renderer/lms100_error_model.hpp"
@@ -25,10 +26,10 @@ namespace refloc::sim {
 /// Which beams a scan has and when they are measured (defaults: LMS100 at 50 Hz, 0.5 deg).
 struct ScanGeometry {
   int num_beams = 541;
-  double start_angle = -135.0 * M_PI / 180.0;   ///< beam 0 in the laser frame [rad]
-  double angle_increment = 0.5 * M_PI / 180.0;  ///< [rad]
-  double scan_period = 0.02;                    ///< time between scans [s]
-  double time_increment = 1.0 / 36000.0;        ///< time between beams [s] (36 kHz)
+  double start_angle = -135.0 * kDegToRad;   ///< beam 0 in the laser frame [rad]
+  double angle_increment = 0.5 * kDegToRad;  ///< [rad]
+  double scan_period = 0.02;                 ///< time between scans [s]
+  double time_increment = 1.0 / 36000.0;     ///< time between beams [s] (36 kHz)
 };
 
 struct ScanRenderConfig {

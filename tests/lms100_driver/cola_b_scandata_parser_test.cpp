@@ -42,7 +42,7 @@ TEST(ColaBScanDataParser, RealLms111FramesDecodeEveryField) {
   EXPECT_EQ(d.time_since_startup_us, 0x74287D59u);
   EXPECT_EQ(d.time_of_transmission_us, 0x74288993u);
   EXPECT_EQ(d.scan_frequency_1e2hz, 5000u);
-  EXPECT_EQ(d.measurement_frequency_100hz, 360u);
+  EXPECT_EQ(d.measurement_frequency_1e1khz, 360u);
   ASSERT_EQ(d.channels16.size(), 1u);
   EXPECT_EQ(d.channels16[0].name, "DIST1");
   EXPECT_EQ(d.channels16[0].start_angle_1e4deg, -450000);

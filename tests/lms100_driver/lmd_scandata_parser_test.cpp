@@ -32,7 +32,7 @@ TEST(LmdScanDataParser, RealLms111TelegramDecodesEveryField) {
   EXPECT_EQ(d.digital_outputs[0], 7u);
   EXPECT_EQ(d.reserved_layer_angle, 0u);
   EXPECT_EQ(d.scan_frequency_1e2hz, 5000u);
-  EXPECT_EQ(d.measurement_frequency_100hz, 360u);
+  EXPECT_EQ(d.measurement_frequency_1e1khz, 360u);
   EXPECT_TRUE(d.encoders.empty());
   ASSERT_EQ(d.channels16.size(), 1u);
   EXPECT_TRUE(d.channels8.empty());

@@ -91,7 +91,7 @@ TEST(ScanConversion, MissingDistOrMismatchedRssiOrNanScaleIsAnError) {
   EXPECT_FALSE(to_laser_scan(d, s).ok());
   d.channels16[0].name = "DIST1";
   d.channels16[0].scale = 1.0F;
-  d.measurement_frequency_100hz = 0;
+  d.measurement_frequency_1e1khz = 0;
   EXPECT_FALSE(to_laser_scan(d, s).ok());
 }
 

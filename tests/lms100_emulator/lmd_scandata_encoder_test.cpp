@@ -114,7 +114,7 @@ TEST(LmdScandataEncoder, RoundTripsThroughTheDriverParser) {
   EXPECT_EQ(parsed.time_since_startup_us, 0xFFFFF000u);
   EXPECT_EQ(parsed.time_of_transmission_us, 0xA00u);
   EXPECT_EQ(parsed.scan_frequency_1e2hz, 5000u);
-  EXPECT_EQ(parsed.measurement_frequency_100hz, 360u);
+  EXPECT_EQ(parsed.measurement_frequency_1e1khz, 360u);
   ASSERT_EQ(parsed.channels16.size(), 2u);
   EXPECT_EQ(parsed.channels16[0].name, "DIST1");
   EXPECT_EQ(parsed.channels16[0].start_angle_1e4deg, -450000);

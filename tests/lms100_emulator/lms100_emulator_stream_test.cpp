@@ -41,7 +41,7 @@ TEST(Lms100EmulatorStream, FiftyHertzScansArriveEveryTwentyMillisecondsWithCount
   }
   // 541 beams at 36 kHz (15.03 ms) plus 1 ms processing between beam 0 and transmission.
   EXPECT_EQ(scans[0].data.time_of_transmission_us - scans[0].data.time_since_startup_us, 16028u);
-  EXPECT_EQ(scans[0].data.measurement_frequency_100hz, 360u);
+  EXPECT_EQ(scans[0].data.measurement_frequency_1e1khz, 360u);
   EXPECT_EQ(scans[0].data.scan_frequency_1e2hz, 5000u);
   // Host arrival follows the device clock: the receive-minus-device offset stays put (no drift).
   std::vector<double> offsets_ms;

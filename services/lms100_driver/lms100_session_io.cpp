@@ -1,0 +1,156 @@
+// Lms100Session's link I/O: one request and its reply (scans in between go to the scan
+// path), the frame pump with its deadline, scan parsing and counters, the polite stop.
+#include "lms100_driver/lms100_session.hpp"
+
+#include <poll.h>
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "common/clock.hpp"
+#include "lms100_driver/cola_a_format.hpp"
+#include "lms100_driver/lmd_scandata_parser.hpp"
+#include "lms100_driver/scan_conversion.hpp"
+
+namespace refloc {
+
+namespace {
+constexpr int kMaxPollMs = 100;  // upper bound on one poll so a stop flag set without the pipe is seen
+}  // namespace
+
+Lms100Session::Wait Lms100Session::transact(const std::string& request, double timeout_s, std::string& reply,
+                                            std::string& why) {
+  if (stop_.load()) {
+    why = "stopped";
+    return Wait::kStopped;
+  }
+  const IoStatus s = link_.send_all(frame_cola_a(request), timeout_s, wake_pipe_[0]);
+  if (s != IoStatus::kOk) {
+    if (s == IoStatus::kTimeout) ++counters_.timeouts;
+    why = s == IoStatus::kStopped ? "stopped" : "send failed: " + link_.last_error();
+    return s == IoStatus::kStopped ? Wait::kStopped : Wait::kClosed;
+  }
+  const Wait w = pump(&request, monotonic_us() + static_cast<int64_t>(timeout_s * 1e6), false, reply, why);
+  if (w == Wait::kTimeout) {
+    ++counters_.timeouts;
+    why = fmt::format("no reply to '{}' within {:.1f} s", request, timeout_s);
+  }
+  return w;
+}
+
+Lms100Session::Wait Lms100Session::pump(const std::string* request, int64_t deadline_us, bool return_on_scan,
+                                        std::string& reply, std::string& why) {
+  for (;;) {
+    // Frames already buffered first: one read can carry a reply and several scans.
+    bool got_scan = false;
+    while (splitter_.next(frame_)) {
+      if (is_lmd_scandata(frame_)) {
+        if (handle_scan(frame_, last_read_utime_)) {
+          got_scan = true;
+        } else if (parse_error_streak_ >= config_.max_parse_error_streak) {
+          why = fmt::format("{} unparsable scans in a row", parse_error_streak_);
+          return Wait::kParseErrors;
+        }
+        if (got_scan && return_on_scan) return Wait::kScan;
+        continue;
+      }
+      uint32_t code = 0;
+      if (request != nullptr && parse_sopas_error(frame_, code)) {
+        ++counters_.sfa_errors;
+        why = fmt::format("sensor answered '{}' with sFA {:X} ({})", *request, code, sopas_error_name(code));
+        return Wait::kSopasError;
+      }
+      if (request != nullptr && is_reply_to(*request, frame_)) {
+        ColaAMessage m;
+        if (split_cola_a(frame_, m) && m.type == "sMA") continue;  // acknowledged; the sAN follows
+        reply = frame_;
+        return Wait::kReply;
+      }
+      if (parse_sopas_error(frame_, code)) ++counters_.sfa_errors;
+      ++counters_.unexpected_frames;  // a late or duplicated reply (seen on real LMS111s)
+    }
+    if (stop_.load()) {
+      why = "stopped";
+      return Wait::kStopped;
+    }
+    const int64_t left_us = deadline_us - monotonic_us();
+    if (left_us <= 0) {
+      why = "timeout";
+      return Wait::kTimeout;
+    }
+    size_t received = 0;
+    const int timeout_ms = static_cast<int>(std::min<int64_t>(left_us / 1000 + 1, kMaxPollMs));
+    const IoStatus s =
+        link_.receive(receive_buffer_.data(), receive_buffer_.size(), timeout_ms, wake_pipe_[0], received);
+    switch (s) {
+      case IoStatus::kOk:
+        last_read_utime_ = now_utime();
+        splitter_.feed(receive_buffer_.data(), received);
+        sync_splitter_counters();
+        break;
+      case IoStatus::kTimeout:
+        break;
+      case IoStatus::kStopped:
+        why = "stopped";
+        return Wait::kStopped;
+      case IoStatus::kClosed:
+      case IoStatus::kError:
+        why = "link lost: " + link_.last_error();
+        return Wait::kClosed;
+    }
+  }
+}
+
+bool Lms100Session::handle_scan(const std::string& payload, int64_t receive_utime) {
+  ParseResult r = parse_lmd_scandata(payload, scan_data_);
+  if (r) r = to_laser_scan(scan_data_, scan_);
+  if (!r) {
+    ++counters_.parse_errors;
+    ++parse_error_streak_;
+    return false;
+  }
+  parse_error_streak_ = 0;
+  if (have_last_scan_counter_) {
+    const uint32_t missing = (scan_data_.scan_counter - last_scan_counter_ - 1) & 0xFFFFu;
+    if (missing != 0 && missing < 0x8000u) {
+      ++counters_.scan_counter_gaps;
+      counters_.lost_scans += missing;
+    }
+  }
+  have_last_scan_counter_ = true;
+  last_scan_counter_ = scan_data_.scan_counter;
+
+  const SensorTimeMapping t =
+      clock_.update(scan_data_.time_since_startup_us, scan_data_.time_of_transmission_us, receive_utime);
+  scan_.utime = t.host_start_utime;
+  scan_.receive_utime = receive_utime;
+  scan_.sensor_start_us = t.sensor_start_us;
+  scan_.sensor_transmit_us = t.sensor_transmit_us;
+  ++counters_.scans;
+  if (on_scan_) on_scan_(scan_);
+  return true;
+}
+
+void Lms100Session::stop_streaming_politely() {
+  // The stop pipe stays readable, so wait on the link alone for these last replies.
+  const int saved = wake_pipe_[0];
+  wake_pipe_[0] = -1;
+  const bool was_stopped = stop_.exchange(false);
+  std::string reply;
+  std::string why;
+  transact(request_scandata_stream(false), config_.stop_reply_timeout_s, reply, why);
+  if (transact(request_login(), config_.stop_reply_timeout_s, reply, why) == Wait::kReply) {
+    transact(request_stop_measurement(), config_.stop_reply_timeout_s, reply, why);
+  }
+  stop_.store(was_stopped || stop_.load());
+  wake_pipe_[0] = saved;
+}
+
+void Lms100Session::sync_splitter_counters() {
+  counters_.garbage_bytes.store(splitter_.garbage_bytes());
+  counters_.resyncs.store(splitter_.resyncs());
+  counters_.oversized_frames.store(splitter_.oversized_frames());
+}
+
+}  // namespace refloc
