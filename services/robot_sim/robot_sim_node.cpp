@@ -1,0 +1,45 @@
+#include "robot_sim/robot_sim_node.hpp"
+
+#include <cmath>
+
+namespace refloc {
+
+RobotSimNode::RobotSimNode(const RobotConfig& robot, const PlantSetup& setup, int64_t start_utime)
+    : robot_T_laser_(robot.robot_T_laser),
+      plant_(robot, setup.plant, setup.initial_map_T_robot, start_utime),
+      encoders_(robot.encoder_ticks_per_rev, setup.encoder_start_ticks),
+      step_us_(static_cast<int64_t>(std::llround(setup.plant.step * 1e6))),
+      laser_poses_(std::make_shared<PoseHistory>(kLaserPoseHistory)) {
+  laser_poses_->add(plant_.utime(), plant_.map_T_robot() * robot_T_laser_);
+}
+
+bool RobotSimNode::on_command(const BodyTwist& twist, int64_t receipt_utime) {
+  if (!std::isfinite(twist.vx) || !std::isfinite(twist.vy) || !std::isfinite(twist.wz)) return false;
+  plant_.command(twist, receipt_utime);
+  return true;
+}
+
+void RobotSimNode::advance(int64_t now_utime) {
+  while (plant_.utime() + step_us_ <= now_utime) {
+    plant_.advance_to(plant_.utime() + step_us_);
+    laser_poses_->add(plant_.utime(), plant_.map_T_robot() * robot_T_laser_);
+  }
+}
+
+EncoderSample RobotSimNode::encoder_tick(int64_t now_utime) {
+  advance(now_utime);
+  EncoderSample sample;
+  sample.utime = plant_.utime();
+  sample.ticks = encoders_.counts(plant_.wheel_angles());
+  const bool stale = plant_.command_stale();
+  sample.command_timed_out = stale && !was_stale_;
+  was_stale_ = stale;
+  return sample;
+}
+
+TruePose RobotSimNode::ground_truth_tick(int64_t now_utime) {
+  advance(now_utime);
+  return {plant_.utime(), plant_.map_T_robot()};
+}
+
+}  // namespace refloc

@@ -1,0 +1,61 @@
+#pragma once
+// What robot_sim does with each message and tick, without LCM: a CMD_VEL command is
+// accepted when finite and timed by its receipt; every tick advances the plant in its
+// fixed internal steps up to now, recording the laser's true pose at each step for the
+// renderer; the encoder tick reports the counts and whether the command just timed out.
+
+#include "common/robot_config.hpp"
+#include "common/se2.hpp"
+#include "robot_sim/encoder_model.hpp"
+#include "robot_sim/mecanum_plant.hpp"
+#include "robot_sim/pose_history.hpp"
+#include "robot_sim/sim_setup.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+
+namespace refloc {
+
+struct EncoderSample {
+  int64_t utime = 0;  ///< plant time of the counts [us]
+  std::array<int32_t, 4> ticks{};
+  bool command_timed_out = false;  ///< the command went stale since the previous sample
+};
+
+struct TruePose {
+  int64_t utime = 0;  ///< [us]
+  Pose2 map_T_robot;
+};
+
+class RobotSimNode {
+ public:
+  /// Laser poses kept for the renderer (2 s at the default 1 kHz step).
+  static constexpr size_t kLaserPoseHistory = 2000;
+
+  RobotSimNode(const RobotConfig& robot, const PlantSetup& setup, int64_t start_utime);
+
+  /// A CMD_VEL twist [m/s, m/s, rad/s] received at receipt_utime [us]; false (and ignored)
+  /// when a component is not finite. Age is judged from receipt, as a motor controller does.
+  bool on_command(const BodyTwist& twist, int64_t receipt_utime);
+  /// Simulates in whole internal steps up to now_utime [us].
+  void advance(int64_t now_utime);
+  /// advance() then the encoder counts.
+  EncoderSample encoder_tick(int64_t now_utime);
+  /// advance() then the true pose.
+  TruePose ground_truth_tick(int64_t now_utime);
+
+  /// The laser's true poses over time, shared with the renderer's thread.
+  std::shared_ptr<const PoseHistory> laser_poses() const { return laser_poses_; }
+  const MecanumPlant& plant() const { return plant_; }
+
+ private:
+  Pose2 robot_T_laser_;
+  MecanumPlant plant_;
+  EncoderModel encoders_;
+  int64_t step_us_;
+  std::shared_ptr<PoseHistory> laser_poses_;
+  bool was_stale_ = true;
+};
+
+}  // namespace refloc

@@ -1,0 +1,35 @@
+#include "robot_sim/sim_setup.hpp"
+
+#include "common/json_config.hpp"
+#include "lms100_emulator/emulator_config_loader.hpp"
+
+#include <filesystem>
+
+namespace refloc {
+
+SimSetup load_sim_setup(const std::string& config_path, const SimOverrides& o) {
+  SimSetup s;
+  if (!config_path.empty()) {
+    const JsonConfig file = JsonConfig::load_file(config_path);
+    s.plant = parse_plant_setup(file);
+    s.encoder_rate = file.number("/encoder_rate_hz", s.encoder_rate, 1.0, 1000.0);
+    s.ground_truth_rate = file.number("/ground_truth_rate_hz", s.ground_truth_rate, 1.0, 1000.0);
+    s.command_channel = file.string("/command_channel", s.command_channel);
+    const std::string world = file.string("/world_file", "");
+    if (!world.empty()) s.world_path = (std::filesystem::path(config_path).parent_path() / world).string();
+    if (file.has("/render")) s.render = sim::parse_scan_render_config(file, "/render");
+    if (file.has("/emulator")) {
+      const JsonConfig emulator(file.subtree("/emulator"), file.source() + " /emulator");
+      s.emulator = parse_emulator_config(emulator);
+      emulator.reject_unknown_keys();
+    }
+    file.reject_unknown_keys();
+  }
+  if (!o.world_path.empty()) s.world_path = o.world_path;
+  if (o.no_laser) s.world_path.clear();
+  if (o.port >= 0) s.emulator.port = static_cast<uint16_t>(o.port);
+  if (!o.sensor_bind_address.empty()) s.emulator.bind_address = o.sensor_bind_address;
+  return s;
+}
+
+}  // namespace refloc

@@ -1,0 +1,71 @@
+#include "robot_sim/robot_sim_node.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace refloc {
+namespace {
+
+constexpr int64_t kStart = 1'000'000;
+
+PlantSetup plant_setup() {
+  PlantSetup setup;
+  setup.initial_map_T_robot = Pose2{2.0, 1.0, 0.0};
+  return setup;
+}
+
+TEST(RobotSimNode, NonFiniteCommandIsRefusedAndDoesNotMoveTheRobot) {
+  RobotSimNode node(RobotConfig{}, plant_setup(), kStart);
+  EXPECT_FALSE(node.on_command({std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0}, kStart));
+  EXPECT_FALSE(node.on_command({0.0, std::numeric_limits<double>::infinity(), 0.0}, kStart));
+  node.advance(kStart + 500'000);
+  EXPECT_DOUBLE_EQ(node.plant().map_T_robot().x, 2.0);
+  EXPECT_TRUE(node.on_command({0.2, 0.0, 0.0}, kStart + 500'000));
+}
+
+TEST(RobotSimNode, AdvanceMovesInWholeStepsOnly) {
+  RobotSimNode node(RobotConfig{}, plant_setup(), kStart);
+  node.advance(kStart + 10'500);  // 10.5 steps of 1 ms
+  EXPECT_EQ(node.plant().utime(), kStart + 10'000);
+  EXPECT_EQ(node.ground_truth_tick(kStart + 10'999).utime, kStart + 10'000);
+  EXPECT_EQ(node.ground_truth_tick(kStart + 11'000).utime, kStart + 11'000);
+}
+
+TEST(RobotSimNode, LaserPoseIsRecordedAtEachStepInTheMapFrame) {
+  RobotConfig robot;
+  robot.robot_T_laser = Pose2{0.3, 0.0, 0.0};
+  RobotSimNode node(robot, plant_setup(), kStart);
+  EXPECT_NEAR(node.laser_poses()->at(kStart).x, 2.3, 1e-12);
+  for (int64_t t = kStart; t <= kStart + 1'000'000; t += 20'000) {
+    node.on_command({0.5, 0.0, 0.0}, t);
+    node.advance(t);
+  }
+  const TruePose truth = node.ground_truth_tick(kStart + 1'000'000);
+  EXPECT_GT(truth.map_T_robot.x, 2.3);
+  EXPECT_NEAR(node.laser_poses()->at(truth.utime).x, truth.map_T_robot.x + 0.3, 1e-9);
+}
+
+TEST(RobotSimNode, CommandTimeoutIsReportedOnceWhenTheCommandGoesStale) {
+  RobotSimNode node(RobotConfig{}, plant_setup(), kStart);
+  EXPECT_FALSE(node.encoder_tick(kStart + 10'000).command_timed_out);  // stale from the start: no edge
+  node.on_command({0.3, 0.0, 0.0}, kStart + 10'000);
+  EXPECT_FALSE(node.encoder_tick(kStart + 20'000).command_timed_out);
+  int timeouts = 0;
+  for (int64_t t = kStart + 30'000; t <= kStart + 1'000'000; t += 10'000)
+    timeouts += node.encoder_tick(t).command_timed_out ? 1 : 0;
+  EXPECT_EQ(timeouts, 1);  // command_timeout 0.2 s passed once, reported once
+}
+
+TEST(RobotSimNode, EncoderTicksStartAtTheConfiguredCount) {
+  PlantSetup setup = plant_setup();
+  setup.encoder_start_ticks = 2'147'000'000;
+  RobotSimNode node(RobotConfig{}, setup, kStart);
+  const EncoderSample sample = node.encoder_tick(kStart + 5'000);
+  EXPECT_EQ(sample.utime, kStart + 5'000);
+  for (const int32_t t : sample.ticks) EXPECT_EQ(t, 2'147'000'000);
+}
+
+}  // namespace
+}  // namespace refloc
