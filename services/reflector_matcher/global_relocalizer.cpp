@@ -15,8 +15,14 @@ constexpr std::array<std::array<int, 3>, 6> kPermutations = {
 }  // namespace
 
 GlobalRelocalizer::GlobalRelocalizer(const ReflectorMap& map, const MapGrid& grid,
-                                     const MapTriangleIndex& index, const MatcherConfig& config)
-    : map_(map), config_(config), index_(index), verifier_(map, grid, config) {}
+                                     const MapTriangleIndex& index,
+                                     const RelocalizationConfig& relocalization,
+                                     const SensorVisibilityConfig& sensor, int min_matches)
+    : map_(map),
+      relocalization_(relocalization),
+      min_matches_(min_matches),
+      index_(index),
+      verifier_(map, grid, sensor, relocalization) {}
 
 void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection>& detections) {
   hypotheses_.clear();
@@ -27,13 +33,13 @@ void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection
     return detections[static_cast<size_t>(a)].laser_p_center.squaredNorm() <
            detections[static_cast<size_t>(b)].laser_p_center.squaredNorm();
   });
-  if (static_cast<int>(nearest_.size()) > config_.max_triple_detections) {
-    nearest_.resize(static_cast<size_t>(config_.max_triple_detections));
+  if (static_cast<int>(nearest_.size()) > relocalization_.max_triple_detections) {
+    nearest_.resize(static_cast<size_t>(relocalization_.max_triple_detections));
   }
-  const double tol = config_.triangle_side_tolerance;
-  const double max_err2 = config_.hypothesis_fit_max_error * config_.hypothesis_fit_max_error;
+  const double tol = relocalization_.side_tolerance;
+  const double max_err2 = relocalization_.hypothesis_fit_max_error * relocalization_.hypothesis_fit_max_error;
   const size_t n = nearest_.size();
-  const auto full = [&] { return static_cast<int>(hypotheses_.size()) >= config_.max_hypotheses; };
+  const auto full = [&] { return static_cast<int>(hypotheses_.size()) >= relocalization_.max_hypotheses; };
   for (size_t i = 0; i < n && !full(); ++i) {
     for (size_t j = i + 1; j < n && !full(); ++j) {
       for (size_t k = j + 1; k < n && !full(); ++k) {
@@ -43,7 +49,7 @@ void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection
             detections[static_cast<size_t>(det[1])].laser_p_center,
             detections[static_cast<size_t>(det[2])].laser_p_center};
         const SortedSides s = sorted_sides(laser_p);
-        if (s.side[0] < config_.min_triangle_side - tol) continue;
+        if (s.side[0] < relocalization_.min_triangle_side - tol) continue;
         index_.for_each_candidate(s.side, [&](const IndexedTriangle& tri) {
           // Sorted order fixes the correspondence unless sides are nearly equal (isosceles):
           // try every vertex assignment whose sides agree, and let the rigid fit decide
@@ -107,7 +113,7 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   result.ndetections = static_cast<int>(detections.size());
   scored_.clear();
   best_associations_.clear();
-  if (static_cast<int>(detections.size()) < config_.min_matches) return;
+  if (static_cast<int>(detections.size()) < min_matches_) return;
 
   generate_hypotheses(detections);
   remove_duplicate_hypotheses();
@@ -132,21 +138,22 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   double runner_up = -1e300;
   bool rival = false;
   for (const Scored& s : scored_) {
-    if (approx_equal(s.map_T_laser, best_pose, config_.distinct_pose_distance, config_.distinct_pose_angle))
+    if (approx_equal(s.map_T_laser, best_pose, relocalization_.distinct_pose_distance,
+                     relocalization_.distinct_pose_angle))
       continue;
     runner_up = std::max(runner_up, s.score);
     const double margin = best_score - s.score;
-    rival = rival || margin < (1.0 - config_.ambiguity_ratio) * best_matched ||
-            (s.matched >= best_matched && margin < config_.ambiguity_missed_margin);
+    rival = rival || margin < (1.0 - relocalization_.ambiguity_ratio) * best_matched ||
+            (s.matched >= best_matched && margin < relocalization_.ambiguity_missed_margin);
   }
   result.map_T_laser = best_pose;
   result.hypothesis_score = best_score;
   result.runner_up_score = scored_.size() > 1 && runner_up > -1e300 ? runner_up : 0.0;
   // Most detections of a real scan are reflectors: a pose that explains few of them is a
   // chance alignment (or the map has changed), not a fix.
-  if (best_matched < config_.min_matches ||
-      best_matched < config_.min_explained_fraction * static_cast<double>(detections.size()) ||
-      best_score < config_.global_min_score) {
+  if (best_matched < min_matches_ ||
+      best_matched < relocalization_.min_explained_fraction * static_cast<double>(detections.size()) ||
+      best_score < relocalization_.min_score) {
     return;
   }
   for (const Association& a : best_associations_) {

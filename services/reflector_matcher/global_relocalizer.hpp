@@ -22,9 +22,10 @@ namespace refloc {
 
 class GlobalRelocalizer {
  public:
-  /// map, grid, index and config must outlive the relocalizer.
+  /// map, grid and index must outlive the relocalizer.
   GlobalRelocalizer(const ReflectorMap& map, const MapGrid& grid, const MapTriangleIndex& index,
-                    const MatcherConfig& config);
+                    const RelocalizationConfig& relocalization, const SensorVisibilityConfig& sensor,
+                    int min_matches);
 
   /// Fills result (status, matches, scores, map_T_laser; mode = GLOBAL).
   void relocalize(const std::vector<ReflectorDetection>& detections, MatchResult& result);
@@ -42,7 +43,8 @@ class GlobalRelocalizer {
   void remove_duplicate_hypotheses();
 
   const ReflectorMap& map_;
-  const MatcherConfig& config_;
+  RelocalizationConfig relocalization_;
+  int min_matches_;
   const MapTriangleIndex& index_;
   HypothesisVerifier verifier_;
   std::vector<int> nearest_;  ///< detection indices used for triples, nearest first

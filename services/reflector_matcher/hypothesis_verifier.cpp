@@ -7,12 +7,13 @@
 namespace refloc {
 
 HypothesisVerifier::HypothesisVerifier(const ReflectorMap& map, const MapGrid& grid,
-                                       const MatcherConfig& config)
-    : map_(map), grid_(grid), config_(config) {}
+                                       const SensorVisibilityConfig& sensor,
+                                       const RelocalizationConfig& relocalization)
+    : map_(map), grid_(grid), sensor_(sensor), relocalization_(relocalization) {}
 
 int HypothesisVerifier::associate(const Pose2& map_T_laser, const std::vector<ReflectorDetection>& detections,
                                   double gate) {
-  predict_reflectors(map_, grid_, map_T_laser, config_, gate, scratch_, predicted_);
+  predict_reflectors(map_, grid_, map_T_laser, sensor_, gate, scratch_, predicted_);
   const double gate2 = gate * gate;
   candidates_.clear();
   for (size_t k = 0; k < predicted_.size(); ++k) {
@@ -51,16 +52,19 @@ Verification HypothesisVerifier::verify(const Pose2& map_T_laser,
                                         const std::vector<ReflectorDetection>& detections) {
   Verification v;
   v.map_T_laser = map_T_laser;
-  if (associate(map_T_laser, detections, config_.verify_coarse_gate) >= 3) refit(detections, v.map_T_laser);
-  v.matched = associate(v.map_T_laser, detections, config_.verify_fine_gate);
+  if (associate(map_T_laser, detections, relocalization_.verify_coarse_gate) >= 3)
+    refit(detections, v.map_T_laser);
+  v.matched = associate(v.map_T_laser, detections, relocalization_.verify_fine_gate);
   for (size_t k = 0; k < predicted_.size(); ++k) {
     if (predicted_[k].in_view && !predicted_matched_[k] &&
-        predicted_[k].range <= config_.missed_penalty_max_range && !is_shadowed(map_, predicted_, k)) {
+        predicted_[k].range <= relocalization_.missed_penalty_max_range &&
+        !is_shadowed(map_, predicted_, k)) {
       ++v.missed;
     }
   }
   v.unexplained = static_cast<int>(detections.size()) - v.matched;
-  v.score = v.matched - config_.missed_penalty * v.missed - config_.unexplained_penalty * v.unexplained;
+  v.score = v.matched - relocalization_.missed_penalty * v.missed -
+            relocalization_.unexplained_penalty * v.unexplained;
   // The reported pose uses every fine association; the associations themselves stay as scored.
   Pose2 refined = v.map_T_laser;
   if (refit(detections, refined)) v.map_T_laser = refined;

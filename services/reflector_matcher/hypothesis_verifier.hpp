@@ -31,8 +31,9 @@ struct Verification {
 
 class HypothesisVerifier {
  public:
-  /// map, grid and config must outlive the verifier.
-  HypothesisVerifier(const ReflectorMap& map, const MapGrid& grid, const MatcherConfig& config);
+  /// map and grid must outlive the verifier; the gates and penalties are relocalization's.
+  HypothesisVerifier(const ReflectorMap& map, const MapGrid& grid, const SensorVisibilityConfig& sensor,
+                     const RelocalizationConfig& relocalization);
 
   /// Associate with the coarse gate, refit, associate with the fine gate, score.
   Verification verify(const Pose2& map_T_laser, const std::vector<ReflectorDetection>& detections);
@@ -53,7 +54,8 @@ class HypothesisVerifier {
 
   const ReflectorMap& map_;
   const MapGrid& grid_;
-  const MatcherConfig& config_;
+  SensorVisibilityConfig sensor_;
+  RelocalizationConfig relocalization_;
   std::vector<int> scratch_;
   std::vector<PredictedReflector> predicted_;
   std::vector<char> predicted_matched_;

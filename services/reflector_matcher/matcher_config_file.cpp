@@ -26,54 +26,66 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
   p.own_sigma_theta = config.number("/own_prior_sigma_deg", p.own_sigma_theta / kDeg, 0.01, 90.0) * kDeg;
   p.relocalize_on_start = config.number("/relocalize_on_start_s", p.relocalize_on_start, 0.0, 60.0);
 
-  m.min_range = config.number("/sensor/min_range_m", m.min_range, 0.0, 100.0);
-  m.max_range = config.number("/sensor/max_range_m", m.max_range, 0.5, 100.0);
-  m.field_of_view = config.number("/sensor/field_of_view_deg", m.field_of_view / kDeg, 1.0, 360.0) * kDeg;
-  if (m.min_range >= m.max_range) config.fail("/sensor/min_range_m", "must be below /sensor/max_range_m");
+  m.sensor.min_range = config.number("/sensor/min_range_m", m.sensor.min_range, 0.0, 100.0);
+  m.sensor.max_range = config.number("/sensor/max_range_m", m.sensor.max_range, 0.5, 100.0);
+  m.sensor.field_of_view =
+      config.number("/sensor/field_of_view_deg", m.sensor.field_of_view / kDeg, 1.0, 360.0) * kDeg;
+  if (m.sensor.min_range >= m.sensor.max_range)
+    config.fail("/sensor/min_range_m", "must be below /sensor/max_range_m");
 
-  m.paper_side_tolerance = config.number("/paper/side_tolerance_m", m.paper_side_tolerance, 0.001, 2.0);
-  m.paper_angle_tolerance =
-      config.number("/paper/angle_tolerance_deg", m.paper_angle_tolerance / kDeg, 0.01, 45.0) * kDeg;
+  m.paper.side_tolerance = config.number("/paper/side_tolerance_m", m.paper.side_tolerance, 0.001, 2.0);
+  m.paper.angle_tolerance =
+      config.number("/paper/angle_tolerance_deg", m.paper.angle_tolerance / kDeg, 0.01, 45.0) * kDeg;
 
-  m.prior_min_sigma_xy = config.number("/tracking/prior_min_sigma_m", m.prior_min_sigma_xy, 0.0, 10.0);
-  m.prior_min_sigma_theta =
-      config.number("/tracking/prior_min_sigma_deg", m.prior_min_sigma_theta / kDeg, 0.0, 90.0) * kDeg;
-  m.tracking_gate_chi2 = config.number("/tracking/gate_chi2", m.tracking_gate_chi2, 0.1, 1000.0);
-  m.detection_min_sigma = config.number("/tracking/detection_min_sigma_m", m.detection_min_sigma, 0.0, 1.0);
-  m.tracking_max_unexplained =
-      static_cast<int>(config.integer("/tracking/max_unexplained", m.tracking_max_unexplained, 0, 1000));
-  m.tracking_min_score = config.number("/tracking/min_score", m.tracking_min_score, -1000.0, 1000.0);
+  m.tracking.prior_min_sigma_xy =
+      config.number("/tracking/prior_min_sigma_m", m.tracking.prior_min_sigma_xy, 0.0, 10.0);
+  m.tracking.prior_min_sigma_theta =
+      config.number("/tracking/prior_min_sigma_deg", m.tracking.prior_min_sigma_theta / kDeg, 0.0, 90.0) *
+      kDeg;
+  m.tracking.gate_chi2 = config.number("/tracking/gate_chi2", m.tracking.gate_chi2, 0.1, 1000.0);
+  m.tracking.detection_min_sigma =
+      config.number("/tracking/detection_min_sigma_m", m.tracking.detection_min_sigma, 0.0, 1.0);
+  m.tracking.max_unexplained =
+      static_cast<int>(config.integer("/tracking/max_unexplained", m.tracking.max_unexplained, 0, 1000));
+  m.tracking.min_score = config.number("/tracking/min_score", m.tracking.min_score, -1000.0, 1000.0);
 
-  m.triangle_side_tolerance =
-      config.number("/relocalization/side_tolerance_m", m.triangle_side_tolerance, 0.001, 2.0);
-  m.min_triangle_side = config.number("/relocalization/min_triangle_side_m", m.min_triangle_side, 0.0, 50.0);
-  m.max_triangle_side = config.number("/relocalization/max_triangle_side_m", 2.0 * m.max_range, 0.1, 1000.0);
-  m.max_index_triangles = static_cast<int>(
-      config.integer("/relocalization/max_index_triangles", m.max_index_triangles, 1000, 100000000));
-  m.max_triple_detections = static_cast<int>(
-      config.integer("/relocalization/max_triple_detections", m.max_triple_detections, 3, 100));
-  m.max_hypotheses =
-      static_cast<int>(config.integer("/relocalization/max_hypotheses", m.max_hypotheses, 1, 10000000));
-  m.hypothesis_fit_max_error =
-      config.number("/relocalization/hypothesis_fit_max_error_m", m.hypothesis_fit_max_error, 0.001, 5.0);
-  m.verify_coarse_gate =
-      config.number("/relocalization/verify_coarse_gate_m", m.verify_coarse_gate, 0.001, 5.0);
-  m.verify_fine_gate = config.number("/relocalization/verify_fine_gate_m", m.verify_fine_gate, 0.001, 5.0);
-  m.missed_penalty = config.number("/relocalization/missed_penalty", m.missed_penalty, 0.0, 10.0);
-  m.missed_penalty_max_range =
-      config.number("/relocalization/missed_penalty_max_range_m", m.missed_penalty_max_range, 0.0, 100.0);
-  m.unexplained_penalty =
-      config.number("/relocalization/unexplained_penalty", m.unexplained_penalty, 0.0, 10.0);
-  m.min_explained_fraction =
-      config.number("/relocalization/min_explained_fraction", m.min_explained_fraction, 0.0, 1.0);
-  m.global_min_score = config.number("/relocalization/min_score", m.global_min_score, -1000.0, 1000.0);
-  m.ambiguity_ratio = config.number("/relocalization/ambiguity_ratio", m.ambiguity_ratio, 0.0, 1.0);
-  m.ambiguity_missed_margin =
-      config.number("/relocalization/ambiguity_missed_margin", m.ambiguity_missed_margin, 0.0, 100.0);
-  m.distinct_pose_distance =
-      config.number("/relocalization/distinct_pose_distance_m", m.distinct_pose_distance, 0.0, 100.0);
-  m.distinct_pose_angle =
-      config.number("/relocalization/distinct_pose_angle_deg", m.distinct_pose_angle / kDeg, 0.0, 180.0) *
+  m.relocalization.side_tolerance =
+      config.number("/relocalization/side_tolerance_m", m.relocalization.side_tolerance, 0.001, 2.0);
+  m.relocalization.min_triangle_side =
+      config.number("/relocalization/min_triangle_side_m", m.relocalization.min_triangle_side, 0.0, 50.0);
+  m.relocalization.max_triangle_side =
+      config.number("/relocalization/max_triangle_side_m", 2.0 * m.sensor.max_range, 0.1, 1000.0);
+  m.relocalization.max_index_triangles = static_cast<int>(config.integer(
+      "/relocalization/max_index_triangles", m.relocalization.max_index_triangles, 1000, 100000000));
+  m.relocalization.max_triple_detections = static_cast<int>(config.integer(
+      "/relocalization/max_triple_detections", m.relocalization.max_triple_detections, 3, 100));
+  m.relocalization.max_hypotheses = static_cast<int>(
+      config.integer("/relocalization/max_hypotheses", m.relocalization.max_hypotheses, 1, 10000000));
+  m.relocalization.hypothesis_fit_max_error = config.number(
+      "/relocalization/hypothesis_fit_max_error_m", m.relocalization.hypothesis_fit_max_error, 0.001, 5.0);
+  m.relocalization.verify_coarse_gate =
+      config.number("/relocalization/verify_coarse_gate_m", m.relocalization.verify_coarse_gate, 0.001, 5.0);
+  m.relocalization.verify_fine_gate =
+      config.number("/relocalization/verify_fine_gate_m", m.relocalization.verify_fine_gate, 0.001, 5.0);
+  m.relocalization.missed_penalty =
+      config.number("/relocalization/missed_penalty", m.relocalization.missed_penalty, 0.0, 10.0);
+  m.relocalization.missed_penalty_max_range = config.number(
+      "/relocalization/missed_penalty_max_range_m", m.relocalization.missed_penalty_max_range, 0.0, 100.0);
+  m.relocalization.unexplained_penalty =
+      config.number("/relocalization/unexplained_penalty", m.relocalization.unexplained_penalty, 0.0, 10.0);
+  m.relocalization.min_explained_fraction = config.number("/relocalization/min_explained_fraction",
+                                                          m.relocalization.min_explained_fraction, 0.0, 1.0);
+  m.relocalization.min_score =
+      config.number("/relocalization/min_score", m.relocalization.min_score, -1000.0, 1000.0);
+  m.relocalization.ambiguity_ratio =
+      config.number("/relocalization/ambiguity_ratio", m.relocalization.ambiguity_ratio, 0.0, 1.0);
+  m.relocalization.ambiguity_missed_margin = config.number(
+      "/relocalization/ambiguity_missed_margin", m.relocalization.ambiguity_missed_margin, 0.0, 100.0);
+  m.relocalization.distinct_pose_distance = config.number(
+      "/relocalization/distinct_pose_distance_m", m.relocalization.distinct_pose_distance, 0.0, 100.0);
+  m.relocalization.distinct_pose_angle =
+      config.number("/relocalization/distinct_pose_angle_deg", m.relocalization.distinct_pose_angle / kDeg,
+                    0.0, 180.0) *
       kDeg;
   m.min_matches = static_cast<int>(config.integer("/min_matches", m.min_matches, 3, 100));
   return s;

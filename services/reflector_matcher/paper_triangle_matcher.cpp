@@ -7,11 +7,11 @@
 
 namespace refloc {
 
-PaperTriangleMatcher::PaperTriangleMatcher(const ReflectorMap& map, const MatcherConfig& config)
-    : map_(map), config_(config) {
+PaperTriangleMatcher::PaperTriangleMatcher(const ReflectorMap& map, const PaperMatchingConfig& paper,
+                                           double max_triangle_side, size_t max_triangles, int min_matches)
+    : map_(map), paper_(paper), min_matches_(min_matches) {
   std::vector<IndexedTriangle> triangles;
-  enumerate_map_triangles(map, 0.0, config.max_triangle_side, static_cast<size_t>(config.max_index_triangles),
-                          triangles);
+  enumerate_map_triangles(map, 0.0, max_triangle_side, max_triangles, triangles);
   map_triangles_.reserve(triangles.size());
   for (const IndexedTriangle& t : triangles) {
     MapTriangle m;
@@ -40,9 +40,7 @@ void PaperTriangleMatcher::match(const std::vector<ReflectorDetection>& detectio
         const LargestAngleSignature sig = largest_angle_signature(
             {detections[i].laser_p_center, detections[j].laser_p_center, detections[k].laser_p_center});
         for (const MapTriangle& m : map_triangles_) {
-          if (!signatures_match(sig, m.signature, config_.paper_side_tolerance,
-                                config_.paper_angle_tolerance))
-            continue;
+          if (!signatures_match(sig, m.signature, paper_.side_tolerance, paper_.angle_tolerance)) continue;
           // Apex to apex, end of the long side to end of the long side, and so on.
           const auto vote = [&](int det_vertex, int map_vertex) {
             ++votes_[det[static_cast<size_t>(det_vertex)] * nm +
@@ -87,7 +85,7 @@ void PaperTriangleMatcher::match(const std::vector<ReflectorDetection>& detectio
     fit.add(detections[d].laser_p_center, r.map_p_center);
   }
   fit.solve(result.map_T_laser);
-  if (static_cast<int>(result.matches.size()) < config_.min_matches) {
+  if (static_cast<int>(result.matches.size()) < min_matches_) {
     result.matches.clear();
     return;
   }

@@ -20,8 +20,10 @@ namespace refloc {
 
 class PaperTriangleMatcher {
  public:
-  /// Precomputes the signature of every map triangle with sides <= config.max_triangle_side.
-  PaperTriangleMatcher(const ReflectorMap& map, const MatcherConfig& config);
+  /// Precomputes the signature of every map triangle with sides <= max_triangle_side [m]
+  /// (at most max_triangles of them).
+  PaperTriangleMatcher(const ReflectorMap& map, const PaperMatchingConfig& paper, double max_triangle_side,
+                       size_t max_triangles, int min_matches);
 
   /// Fills result (mode GLOBAL): OK with >= min_matches correspondences, AMBIGUOUS when a
   /// detection's vote is tied between reflectors, else LOST.
@@ -41,7 +43,8 @@ class PaperTriangleMatcher {
   };
 
   const ReflectorMap& map_;
-  const MatcherConfig& config_;
+  PaperMatchingConfig paper_;
+  int min_matches_;
   std::vector<MapTriangle> map_triangles_;
   std::vector<int> votes_;  ///< detections x map reflectors
   std::vector<Vote> ranked_;

@@ -5,16 +5,21 @@
 namespace refloc {
 
 ReflectorMatcher::ReflectorMatcher(ReflectorMap map, const MatcherConfig& config)
-    : map_(std::move(map)), config_(config), grid_(map_, 0.5 * config.max_range) {
+    : map_(std::move(map)), config_(config), grid_(map_, 0.5 * config.sensor.max_range) {
   if (config_.mode == MatcherMode::kPaper) {
-    paper_ = std::make_unique<PaperTriangleMatcher>(map_, config_);
+    paper_ = std::make_unique<PaperTriangleMatcher>(
+        map_, config_.paper, config_.relocalization.max_triangle_side,
+        static_cast<size_t>(config_.relocalization.max_index_triangles), config_.min_matches);
     return;
   }
-  index_ = std::make_unique<MapTriangleIndex>(map_, config_.triangle_side_tolerance,
-                                              config_.min_triangle_side, config_.max_triangle_side,
-                                              static_cast<size_t>(config_.max_index_triangles));
-  relocalizer_ = std::make_unique<GlobalRelocalizer>(map_, grid_, *index_, config_);
-  tracker_ = std::make_unique<TrackingAssociator>(map_, grid_, config_);
+  index_ = std::make_unique<MapTriangleIndex>(
+      map_, config_.relocalization.side_tolerance, config_.relocalization.min_triangle_side,
+      config_.relocalization.max_triangle_side,
+      static_cast<size_t>(config_.relocalization.max_index_triangles));
+  relocalizer_ = std::make_unique<GlobalRelocalizer>(map_, grid_, *index_, config_.relocalization,
+                                                     config_.sensor, config_.min_matches);
+  tracker_ = std::make_unique<TrackingAssociator>(map_, grid_, config_.tracking, config_.sensor,
+                                                  config_.relocalization, config_.min_matches);
 }
 
 size_t ReflectorMatcher::indexed_triangles() const {
@@ -32,16 +37,17 @@ void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, 
     return;
   }
   const int unexplained = result.ndetections - static_cast<int>(result.matches.size());
-  if (unexplained <= config_.tracking_max_unexplained &&
-      result.hypothesis_score >= config_.tracking_min_score)
+  if (unexplained <= config_.tracking.max_unexplained &&
+      result.hypothesis_score >= config_.tracking.min_score)
     return;
   // A weak association (distractors, hidden reflectors, or a prior that is off) is checked by the
   // map-wide search, which owes nothing to the prior.
   std::swap(tracked_, result);
   relocalizer_->relocalize(detections, result);
   const bool global_ok = result.status == MatchStatus::kOk;
-  if (global_ok && !approx_equal(result.map_T_laser, tracked_.map_T_laser, config_.distinct_pose_distance,
-                                 config_.distinct_pose_angle)) {
+  if (global_ok &&
+      !approx_equal(result.map_T_laser, tracked_.map_T_laser, config_.relocalization.distinct_pose_distance,
+                    config_.relocalization.distinct_pose_angle)) {
     // The map alone points elsewhere: the prior may be wrong (kidnapped robot, odometry jump)
     // or the map-wide search fooled by a weak scene; scores cannot tell which here (unmapped
     // racks make "unseen" reflectors common), so no fix. Without fixes POSE ages, the prior
@@ -57,8 +63,8 @@ void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, 
   // pairs next to a wrong prior leave the real reflectors in view unexplained.
   const auto tracked_matched = static_cast<int>(tracked_.matches.size());
   const bool bare_unconfirmed = !global_ok && tracked_matched <= config_.min_matches &&
-                                tracked_.hypothesis_score < config_.tracking_min_score;
-  if (tracked_matched < config_.min_explained_fraction * tracked_.ndetections ||
+                                tracked_.hypothesis_score < config_.tracking.min_score;
+  if (tracked_matched < config_.relocalization.min_explained_fraction * tracked_.ndetections ||
       (bare_unconfirmed && tracked_matched < tracked_.ndetections)) {
     result.mode = MatchMode::kTracking;
     result.status = MatchStatus::kLost;

@@ -6,23 +6,23 @@
 namespace refloc {
 
 void predict_reflectors(const ReflectorMap& map, const MapGrid& grid, const Pose2& map_T_laser,
-                        const MatcherConfig& config, double margin, std::vector<int>& scratch,
+                        const SensorVisibilityConfig& sensor, double margin, std::vector<int>& scratch,
                         std::vector<PredictedReflector>& out) {
   out.clear();
   scratch.clear();
-  grid.query(map_T_laser.translation(), config.max_range + margin, scratch);
+  grid.query(map_T_laser.translation(), sensor.max_range + margin, scratch);
   const Pose2 laser_T_map = map_T_laser.inverse();
-  const double half_fov = 0.5 * config.field_of_view;
+  const double half_fov = 0.5 * sensor.field_of_view;
   for (int i : scratch) {
     PredictedReflector p;
     p.map_index = i;
     p.laser_p = laser_T_map * map.reflectors[static_cast<size_t>(i)].map_p_center;
     p.range = p.laser_p.norm();
-    if (p.range < config.min_range - margin || p.range > config.max_range + margin) continue;
+    if (p.range < sensor.min_range - margin || p.range > sensor.max_range + margin) continue;
     p.bearing = std::atan2(p.laser_p.y(), p.laser_p.x());
     const double angular_margin = p.range > margin ? std::asin(margin / p.range) : M_PI;
     if (std::abs(p.bearing) > half_fov + angular_margin) continue;
-    p.in_view = p.range >= config.min_range && p.range <= config.max_range && std::abs(p.bearing) <= half_fov;
+    p.in_view = p.range >= sensor.min_range && p.range <= sensor.max_range && std::abs(p.bearing) <= half_fov;
     out.push_back(p);
   }
 }

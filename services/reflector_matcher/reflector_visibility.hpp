@@ -26,7 +26,7 @@ struct PredictedReflector {
 /// Fills out (cleared first) with the map reflectors near the view of map_T_laser: within the
 /// range limits and field of view widened by margin [m]. scratch is reused working memory.
 void predict_reflectors(const ReflectorMap& map, const MapGrid& grid, const Pose2& map_T_laser,
-                        const MatcherConfig& config, double margin, std::vector<int>& scratch,
+                        const SensorVisibilityConfig& sensor, double margin, std::vector<int>& scratch,
                         std::vector<PredictedReflector>& out);
 
 /// True when a nearer reflector in predicted shadows predicted[k] (their angular extents overlap).

@@ -11,8 +11,14 @@
 namespace refloc {
 
 TrackingAssociator::TrackingAssociator(const ReflectorMap& map, const MapGrid& grid,
-                                       const MatcherConfig& config)
-    : map_(map), grid_(grid), config_(config), refit_verifier_(map, grid, config) {}
+                                       const TrackingConfig& tracking, const SensorVisibilityConfig& sensor,
+                                       const RelocalizationConfig& relocalization, int min_matches)
+    : map_(map),
+      grid_(grid),
+      tracking_(tracking),
+      sensor_(sensor),
+      min_matches_(min_matches),
+      refit_verifier_(map, grid, sensor, relocalization) {}
 
 bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detections, const PosePrior& prior,
                                    MatchResult& result) {
@@ -25,23 +31,23 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
   result.ndetections = static_cast<int>(detections.size());
 
   Eigen::Matrix3d prior_cov = prior.covariance;
-  const double min_var_xy = config_.prior_min_sigma_xy * config_.prior_min_sigma_xy;
-  const double min_var_theta = config_.prior_min_sigma_theta * config_.prior_min_sigma_theta;
+  const double min_var_xy = tracking_.prior_min_sigma_xy * tracking_.prior_min_sigma_xy;
+  const double min_var_theta = tracking_.prior_min_sigma_theta * tracking_.prior_min_sigma_theta;
   prior_cov(0, 0) = std::max(prior_cov(0, 0), min_var_xy);
   prior_cov(1, 1) = std::max(prior_cov(1, 1), min_var_xy);
   prior_cov(2, 2) = std::max(prior_cov(2, 2), min_var_theta);
 
   // The prior's 3-sigma position error widens the search beyond the nominal view.
   const double margin = 3.0 * std::sqrt(std::max(prior_cov(0, 0), prior_cov(1, 1))) +
-                        3.0 * std::sqrt(prior_cov(2, 2)) * config_.max_range;
-  predict_reflectors(map_, grid_, prior.map_T_laser, config_, margin, scratch_, predicted_);
+                        3.0 * std::sqrt(prior_cov(2, 2)) * sensor_.max_range;
+  predict_reflectors(map_, grid_, prior.map_T_laser, sensor_, margin, scratch_, predicted_);
 
   const double c = std::cos(prior.map_T_laser.theta), s = std::sin(prior.map_T_laser.theta);
   Eigen::Matrix2d laser_R_map_derivative;  // d(R^T)/d theta
   laser_R_map_derivative << -s, c, -c, -s;
   Eigen::Matrix2d laser_R_map;
   laser_R_map << c, s, -s, c;
-  const double min_det_var = config_.detection_min_sigma * config_.detection_min_sigma;
+  const double min_det_var = tracking_.detection_min_sigma * tracking_.detection_min_sigma;
 
   candidates_.clear();
   for (size_t k = 0; k < predicted_.size(); ++k) {
@@ -57,8 +63,7 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
       cov(1, 1) += min_det_var;
       const Eigen::Vector2d e = detections[d].laser_p_center - predicted_[k].laser_p;
       const double m2 = e.dot(cov.inverse() * e);
-      if (m2 <= config_.tracking_gate_chi2)
-        candidates_.push_back({m2, static_cast<int>(k), static_cast<int>(d)});
+      if (m2 <= tracking_.gate_chi2) candidates_.push_back({m2, static_cast<int>(k), static_cast<int>(d)});
     }
   }
   std::sort(candidates_.begin(), candidates_.end(),
@@ -73,14 +78,14 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
     fit.add(detections[d].laser_p_center,
             map_.reflectors[static_cast<size_t>(predicted_[k].map_index)].map_p_center);
   }
-  if (fit.count() < config_.min_matches) return false;
+  if (fit.count() < min_matches_) return false;
   Pose2 refined;
   if (!fit.solve(refined)) return false;
 
   // Greedy pairs under a wide gate can swap neighbours; the majority is right, so the refitted
   // pose is close: associate again with the verifier's coarse-then-fine Euclidean gates.
   const Verification v = refit_verifier_.verify(refined, detections);
-  if (v.matched < config_.min_matches) return false;
+  if (v.matched < min_matches_) return false;
   RigidFit2d final_fit;
   for (const Association& a : refit_verifier_.associations()) {
     const MapReflector& r = map_.reflectors[static_cast<size_t>(a.map_index)];

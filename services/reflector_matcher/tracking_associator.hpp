@@ -22,11 +22,13 @@ namespace refloc {
 
 class TrackingAssociator {
  public:
-  /// map, grid and config must outlive the associator.
-  TrackingAssociator(const ReflectorMap& map, const MapGrid& grid, const MatcherConfig& config);
+  /// map and grid must outlive the associator; relocalization's gates verify the association.
+  TrackingAssociator(const ReflectorMap& map, const MapGrid& grid, const TrackingConfig& tracking,
+                     const SensorVisibilityConfig& sensor, const RelocalizationConfig& relocalization,
+                     int min_matches);
 
   /// Fills result (mode TRACKING); returns false (status LOST) when fewer than
-  /// config.min_matches detections could be associated, so the caller can relocalize.
+  /// min_matches detections could be associated, so the caller can relocalize.
   bool associate(const std::vector<ReflectorDetection>& detections, const PosePrior& prior,
                  MatchResult& result);
 
@@ -39,7 +41,9 @@ class TrackingAssociator {
 
   const ReflectorMap& map_;
   const MapGrid& grid_;
-  const MatcherConfig& config_;
+  TrackingConfig tracking_;
+  SensorVisibilityConfig sensor_;
+  int min_matches_;
   HypothesisVerifier refit_verifier_;
   std::vector<int> scratch_;
   std::vector<PredictedReflector> predicted_;

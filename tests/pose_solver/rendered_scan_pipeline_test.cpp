@@ -98,8 +98,8 @@ WrongPriorTally run_wrong_prior(double offset, int poses, unsigned seed) {
   const Pose2 robot_T_laser = load_robot_config(dir + "/robot.json").robot_T_laser;
   ReflectorExtractor extractor;
   MatcherConfig trusting_config;
-  trusting_config.tracking_max_unexplained = 1000;
-  trusting_config.tracking_min_score = -1000.0;
+  trusting_config.tracking.max_unexplained = 1000;
+  trusting_config.tracking.min_score = -1000.0;
   ReflectorMatcher checked(map, MatcherConfig{}), trusting(map, trusting_config);
   sim::ScanRenderer renderer;
   std::mt19937_64 rng(seed);

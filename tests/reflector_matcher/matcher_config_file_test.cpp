@@ -24,9 +24,9 @@ TEST(MatcherConfigFile, EmptyDocumentGivesTheDefaults) {
   const MatcherServiceConfig c = parse_matcher_service_config(doc("{}"), "/base");
   const MatcherConfig defaults;
   EXPECT_EQ(c.map_file, "/base/map_demo.json");
-  EXPECT_DOUBLE_EQ(c.matcher.max_range, defaults.max_range);
-  EXPECT_DOUBLE_EQ(c.matcher.max_triangle_side, 2.0 * defaults.max_range);
-  EXPECT_NEAR(c.matcher.field_of_view, 270.0 * M_PI / 180.0, 1e-12);
+  EXPECT_DOUBLE_EQ(c.matcher.sensor.max_range, defaults.sensor.max_range);
+  EXPECT_DOUBLE_EQ(c.matcher.relocalization.max_triangle_side, 2.0 * defaults.sensor.max_range);
+  EXPECT_NEAR(c.matcher.sensor.field_of_view, 270.0 * M_PI / 180.0, 1e-12);
   EXPECT_EQ(c.input_channel, "REFLECTORS");
 }
 
@@ -37,8 +37,8 @@ TEST(MatcherConfigFile, DegreesAndRelativeMapPathAreConverted) {
       "/etc/refloc");
   EXPECT_EQ(c.map_file, "/etc/refloc/maps/hall.json");
   EXPECT_EQ(c.matcher.mode, MatcherMode::kPaper);
-  EXPECT_NEAR(c.matcher.paper_angle_tolerance, 3.0 * M_PI / 180.0, 1e-12);
-  EXPECT_NEAR(c.matcher.distinct_pose_angle, 10.0 * M_PI / 180.0, 1e-12);
+  EXPECT_NEAR(c.matcher.paper.angle_tolerance, 3.0 * M_PI / 180.0, 1e-12);
+  EXPECT_NEAR(c.matcher.relocalization.distinct_pose_angle, 10.0 * M_PI / 180.0, 1e-12);
   const MatcherServiceConfig absolute =
       parse_matcher_service_config(doc(R"({"map_file": "/m.json"})"), "/etc");
   EXPECT_EQ(absolute.map_file, "/m.json");
