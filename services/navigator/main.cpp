@@ -49,7 +49,7 @@ PoseQuality to_quality(int8_t status) {
   return PoseQuality::kUnusable;
 }
 
-twist_t to_message(const TwistCommand& cmd, int64_t utime) {
+twist_t to_message(const BodyTwist& cmd, int64_t utime) {
   twist_t msg{};
   msg.utime = utime;
   msg.vx = cmd.vx;

@@ -115,7 +115,7 @@ bool Navigator::pose_usable(int64_t now_utime, std::string& why_not) const {
   return true;
 }
 
-TwistCommand Navigator::update(int64_t now_utime) {
+BodyTwist Navigator::update(int64_t now_utime) {
   const double dt = last_update_utime_ > 0
                         ? std::clamp(1e-6 * static_cast<double>(now_utime - last_update_utime_), 0.0, 0.1)
                         : 0.02;
@@ -138,7 +138,7 @@ TwistCommand Navigator::update(int64_t now_utime) {
   return drive(now_utime, dt);
 }
 
-TwistCommand Navigator::drive(int64_t now_utime, double dt) {
+BodyTwist Navigator::drive(int64_t now_utime, double dt) {
   const Waypoint& target = goal_.waypoints[static_cast<size_t>(status_.waypoint_index)];
   const Eigen::Vector2d error(target.x - pose_.x, target.y - pose_.y);
   const double distance = error.norm();

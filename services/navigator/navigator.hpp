@@ -61,13 +61,6 @@ struct NavStatus {
 /// How usable a pose is for driving.
 enum class PoseQuality { kGood, kDegraded, kUnusable };
 
-/// Body twist command [m/s, m/s, rad/s].
-struct TwistCommand {
-  double vx = 0.0;
-  double vy = 0.0;
-  double wz = 0.0;
-};
-
 class Navigator {
  public:
   explicit Navigator(const NavigatorConfig& config);
@@ -79,14 +72,14 @@ class Navigator {
   bool set_goal(const NavGoal& goal, int64_t now_utime);
   /// The latest map_T_robot, the time it refers to [us] and its quality.
   void set_pose(const Pose2& map_T_robot, int64_t pose_utime, PoseQuality quality);
-  /// One control period: the body twist to command now.
-  TwistCommand update(int64_t now_utime);
+  /// One control period: the body twist to command now [m/s, m/s, rad/s].
+  BodyTwist update(int64_t now_utime);
 
   const NavStatus& status() const { return status_; }
 
  private:
   bool pose_usable(int64_t now_utime, std::string& why_not) const;
-  TwistCommand drive(int64_t now_utime, double dt);
+  BodyTwist drive(int64_t now_utime, double dt);
   void abort(const std::string& reason);
   void stop_output();
 

@@ -41,7 +41,7 @@ void NavigatorNode::on_pose(const Pose2& map_T_robot, int64_t pose_utime, PoseQu
 NavigatorOutput NavigatorNode::on_control_tick(int64_t now_utime) {
   events_.clear();
   const NavState before = navigator_.status().state;
-  const TwistCommand cmd = navigator_.update(now_utime);
+  const BodyTwist cmd = navigator_.update(now_utime);
   const NavState after = navigator_.status().state;
   if (after == NavState::kStoppedNoPose && before != NavState::kStoppedNoPose) {
     events_.push_back(counted("pose_stops"));

@@ -18,8 +18,8 @@ namespace refloc {
 
 /// What one call wants published.
 struct NavigatorOutput {
-  std::optional<TwistCommand> command;  ///< CMD_VEL
-  const NavStatus* status = nullptr;    ///< NAV_STATUS; nullptr: none
+  std::optional<BodyTwist> command;   ///< CMD_VEL
+  const NavStatus* status = nullptr;  ///< NAV_STATUS; nullptr: none
 };
 
 struct NavigatorHealth {

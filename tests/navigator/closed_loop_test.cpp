@@ -39,13 +39,13 @@ TEST(NavigatorClosedLoop, ReachesSixWaypointsWithinTenMillimetresAndHalfADegree)
     plant.advance_to(now);
     nav.set_pose(plant.map_T_robot(), now, PoseQuality::kGood);
     const int before = nav.status().waypoints_reached;
-    const TwistCommand cmd = nav.update(now);
+    const BodyTwist cmd = nav.update(now);
     if (nav.status().waypoints_reached > before) {
       const Waypoint& w = goal.waypoints[static_cast<size_t>(before)];
       const Pose2& p = plant.map_T_robot();
       reached.push_back({std::hypot(w.x - p.x, w.y - p.y), std::abs(angle_diff(w.theta, p.theta))});
     }
-    plant.command({cmd.vx, cmd.vy, cmd.wz}, now);
+    plant.command(cmd, now);
     peak_speed = std::max(peak_speed, std::hypot(plant.body_twist().vx, plant.body_twist().vy));
     now += 20'000;
   }

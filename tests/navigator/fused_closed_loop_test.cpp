@@ -68,13 +68,13 @@ TEST(FusedClosedLoop, NoisyDelayedFixesAndSlipStillReachWaypointsWithinFifteenMi
       nav.set_pose(fusion.estimate().map_T_robot, fusion.utime(),
                    status == FusionStatus::kOk ? PoseQuality::kGood : PoseQuality::kUnusable);
       const int before = nav.status().waypoints_reached;
-      const TwistCommand cmd = nav.update(now);
+      const BodyTwist cmd = nav.update(now);
       if (nav.status().waypoints_reached > before) {
         const Waypoint& w = goal.waypoints[static_cast<size_t>(before)];
         errors_xy.push_back(std::hypot(w.x - plant.map_T_robot().x, w.y - plant.map_T_robot().y));
         errors_heading.push_back(std::abs(angle_diff(w.theta, plant.map_T_robot().theta)));
       }
-      plant.command({cmd.vx, cmd.vy, cmd.wz}, now);
+      plant.command(cmd, now);
     }
   }
   ASSERT_EQ(nav.status().state, NavState::kArrived)

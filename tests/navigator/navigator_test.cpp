@@ -17,7 +17,7 @@ NavGoal goal_to(double x, double y, double theta) {
   return goal;
 }
 
-bool is_zero(const TwistCommand& c) { return c.vx == 0.0 && c.vy == 0.0 && c.wz == 0.0; }
+bool is_zero(const BodyTwist& c) { return c.vx == 0.0 && c.vy == 0.0 && c.wz == 0.0; }
 
 TEST(Navigator, IdleWithoutGoalCommandsZero) {
   Navigator nav{NavigatorConfig{}};
@@ -35,14 +35,14 @@ TEST(Navigator, StalePoseGivesZeroTwistWithinOneControlPeriodAndDrivingResumes) 
   EXPECT_GT(nav.update(now).vx, 0.0);
   EXPECT_EQ(nav.status().state, NavState::kDriving);
   // The first period after the pose turns 200 ms old commands zero.
-  const TwistCommand stopped = nav.update(now += kPeriod);
+  const BodyTwist stopped = nav.update(now += kPeriod);
   EXPECT_LE(now - kT0, 200'000 + kPeriod);
   EXPECT_TRUE(is_zero(stopped));
   EXPECT_EQ(nav.status().state, NavState::kStoppedNoPose);
   EXPECT_NE(nav.status().reason.find("220 ms old"), std::string::npos) << nav.status().reason;
   // A good pose again: driving resumes, ramping up from zero under max_accel.
   nav.set_pose({0.1, 0.0, 0.0}, now, PoseQuality::kGood);
-  const TwistCommand resumed = nav.update(now += kPeriod);
+  const BodyTwist resumed = nav.update(now += kPeriod);
   EXPECT_EQ(nav.status().state, NavState::kDriving);
   EXPECT_NEAR(resumed.vx, 0.5 * 0.02, 1e-12);
 }
@@ -63,7 +63,7 @@ TEST(Navigator, CommandIsExpressedInTheBodyFrame) {
   Navigator nav{NavigatorConfig{}};
   nav.set_goal(goal_to(2.0, 0.0, M_PI / 2.0), kT0);
   nav.set_pose({0.0, 0.0, M_PI / 2.0}, kT0, PoseQuality::kGood);  // facing +y
-  const TwistCommand c = nav.update(kT0 + kPeriod);
+  const BodyTwist c = nav.update(kT0 + kPeriod);
   EXPECT_NEAR(c.vx, 0.0, 1e-12);
   EXPECT_NEAR(c.vy, -0.01, 1e-12);  // the target is on the robot's right
   EXPECT_NEAR(c.wz, 0.0, 1e-12);
