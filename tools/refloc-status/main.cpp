@@ -6,6 +6,7 @@
 #include "common/guarded_main.hpp"
 #include "common/service_runtime.hpp"
 #include "heartbeat_table.hpp"
+#include "refresh_schedule.hpp"
 #include "status_report.hpp"
 
 #include <CLI/CLI.hpp>
@@ -58,23 +59,6 @@ struct Listener {
   }
 };
 
-void print(const Listener& listener, const std::vector<std::string>& expected, bool json, bool clear_screen) {
-  const auto rows = listener.table.rows(expected, monotonic_s());
-  if (json) {
-    auto doc = status_to_json(rows);
-    doc["heartbeat_decode_errors"] = listener.decode_errors;
-    std::printf("%s\n", doc.dump().c_str());
-  } else {
-    if (clear_screen) std::printf("\033[H\033[2J");
-    std::printf("%s", format_status_table(rows).c_str());
-    if (listener.decode_errors > 0) {
-      std::printf("%lld HEARTBEAT messages could not be decoded (other heartbeat_t version?)\n",
-                  static_cast<long long>(listener.decode_errors));
-    }
-  }
-  std::fflush(stdout);
-}
-
 int run(const std::string& lcm_url, const std::vector<std::string>& expected, bool once, double wait_s,
         double max_age_s, bool json) {
   const std::string url = resolve_lcm_url(lcm_url);
@@ -86,19 +70,16 @@ int run(const std::string& lcm_url, const std::vector<std::string>& expected, bo
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
 
-  const double start_s = monotonic_s();
-  double next_print_s = once ? start_s + wait_s : start_s + 1.0;
-  while (g_stop == 0) {
-    const double now_s = monotonic_s();
-    if (now_s >= next_print_s) {
-      print(listener, expected, json, !once && !json);
-      if (once) break;
-      next_print_s += 1.0;
-      if (next_print_s < now_s) next_print_s = now_s + 1.0;
+  RefreshSchedule schedule(monotonic_s(), once, wait_s);
+  while (g_stop == 0 && !schedule.done()) {
+    if (schedule.due(monotonic_s())) {
+      const auto rows = listener.table.rows(expected, monotonic_s());
+      std::printf("%s", format_status(rows, listener.decode_errors, json, !once && !json).c_str());
+      std::fflush(stdout);
     }
-    const int timeout_ms =
-        static_cast<int>(std::clamp((next_print_s - monotonic_s()) * 1000.0, 0.0, 100.0)) + 1;
-    lcm->handleTimeout(timeout_ms);
+    if (schedule.done()) break;
+    const double wait_ms = std::min(schedule.seconds_until_due(monotonic_s()) * 1000.0, 100.0);
+    lcm->handleTimeout(static_cast<int>(wait_ms) + 1);
   }
   return status_exit_code(listener.table.rows(expected, monotonic_s()));
 }

@@ -89,4 +89,20 @@ nlohmann::json status_to_json(const std::vector<ServiceStatus>& rows) {
   return {{"ok", missing.empty()}, {"missing", missing}, {"services", std::move(services)}};
 }
 
+std::string format_status(const std::vector<ServiceStatus>& rows, int64_t heartbeat_decode_errors, bool json,
+                          bool clear_screen) {
+  if (json) {
+    auto doc = status_to_json(rows);
+    doc["heartbeat_decode_errors"] = heartbeat_decode_errors;
+    return doc.dump() + "\n";
+  }
+  std::string out = clear_screen ? "\033[H\033[2J" : "";
+  out += format_status_table(rows);
+  if (heartbeat_decode_errors > 0) {
+    out += fmt::format("{} HEARTBEAT messages could not be decoded (other heartbeat_t version?)\n",
+                       heartbeat_decode_errors);
+  }
+  return out;
+}
+
 }  // namespace refloc

@@ -75,3 +75,22 @@ TEST(StatusReport, AllAliveSummaryLine) {
 
 }  // namespace
 }  // namespace refloc
+
+namespace refloc {
+namespace {
+
+TEST(StatusReport, OneRefreshIsOneJsonLineOrTheTableWithDecodeErrors) {
+  const std::vector<ServiceStatus> rows;
+  const std::string json = format_status(rows, 3, true, true);
+  EXPECT_EQ(json.back(), '\n');
+  EXPECT_EQ(json.find('\n'), json.size() - 1) << "one line";
+  EXPECT_EQ(nlohmann::json::parse(json)["heartbeat_decode_errors"], 3);
+  const std::string text = format_status(rows, 3, false, true);
+  EXPECT_EQ(text.rfind("\033[H\033[2J", 0), 0u) << "live mode clears the screen first";
+  EXPECT_NE(text.find("3 HEARTBEAT messages could not be decoded"), std::string::npos) << text;
+  EXPECT_EQ(format_status(rows, 0, false, false).find("could not be decoded"), std::string::npos);
+  EXPECT_EQ(format_status(rows, 0, false, false).rfind("\033", 0), std::string::npos);
+}
+
+}  // namespace
+}  // namespace refloc
