@@ -1,0 +1,80 @@
+#include "eval_command.hpp"
+
+#include "accuracy_study.hpp"
+#include "common/json_config.hpp"
+#include "common/reflector_map.hpp"
+#include "common/robot_config.hpp"
+#include "eval_report.hpp"
+#include "path_plot_svg.hpp"
+#include "world_renderer/world_loader.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+namespace refloc {
+
+int run_eval(const std::string& command, EvalOptions o) {
+  const bool paper_table = command == "paper-table";
+  if (o.world_file.empty())
+    o.world_file = paper_table ? "deploy/config/paper_cell.json" : "deploy/config/world_demo.json";
+  if (o.out_prefix.empty()) {
+    o.out_prefix = !o.json_file.empty() && o.json_file.size() > 5 &&
+                           o.json_file.compare(o.json_file.size() - 5, 5, ".json") == 0
+                       ? o.json_file.substr(0, o.json_file.size() - 5)
+                       : "logs/refloc-eval-" + command;
+  }
+  const sim::World world = sim::load_world(o.world_file);
+  const ReflectorMap map = load_reflector_map(world.map_file);
+  const RobotConfig robot = load_robot_config(o.robot_file);
+  StudyConfig config;
+  config.range_sigma = o.sigma_mm / 1000.0;
+  config.range_offset = o.offset_mm / 1000.0;
+  config.seed = o.seed;
+  config.repeats = paper_table ? o.repeats : 1;
+  std::mt19937_64 pose_rng(o.seed + 1000);
+  const std::vector<Pose2> poses =
+      paper_table ? paper_table_poses() : random_drivable_poses(world, o.n, 0.4, pose_rng);
+  if (poses.empty())
+    throw ConfigError(o.world_file + ": /drivable_areas: no pose could be drawn (missing or too small)");
+  PipelineConfigs paper_configs =
+      load_pipeline_configs(PipelineMode::kPaper, o.extractor_file, o.matcher_file, o.solver_file);
+  PipelineConfigs default_configs =
+      load_pipeline_configs(PipelineMode::kDefault, o.extractor_file, o.matcher_file, o.solver_file);
+  // The clustering threshold and the fit weights follow the simulated sensor's noise.
+  paper_configs.extractor.extractor.clustering.range_sigma = config.range_sigma;
+  default_configs.extractor.extractor.clustering.range_sigma = config.range_sigma;
+  const StudyResult r = run_study(world, map, robot.robot_T_laser, paper_configs, default_configs, poses,
+                                  config, o.progress ? ProgressCallback(print_progress) : ProgressCallback());
+  if (paper_table) print_paper_table(r, poses, config.repeats);
+  fmt::print("\n{} over {} poses x {} scans, sigma {:.1f} mm, offset {:.1f} mm, world {}\n", command,
+             poses.size(), config.repeats, o.sigma_mm, o.offset_mm, o.world_file);
+  print_summary("paper", r.paper);
+  print_summary("default", r.default_mode);
+
+  nlohmann::json j;
+  j["command"] = command;
+  j["world"] = o.world_file;
+  j["sigma_mm"] = o.sigma_mm;
+  j["offset_mm"] = o.offset_mm;
+  j["seed"] = o.seed;
+  j["scans_per_pose"] = config.repeats;
+  j["modes"]["paper"] = to_json(r.paper);
+  j["modes"]["default"] = to_json(r.default_mode);
+  if (paper_table) j["paper_reported"] = {{"mean_max_err_x_mm", 14.3}, {"mean_max_err_y_mm", 14.7}};
+  if (!o.json_file.empty()) std::ofstream(o.json_file) << j.dump(2) << "\n";
+  std::ofstream(o.out_prefix + ".csv") << measurements_csv(r.measurements);
+  std::vector<PlotSeries> series = {
+      {"paper mode error [mm]", "#ff7f0e", errors_mm(r, PipelineMode::kPaper), true},
+      {"default mode error [mm]", "#1f77b4", errors_mm(r, PipelineMode::kDefault), true}};
+  if (paper_table)
+    series.insert(series.begin(),
+                  {"paper's Table 1 (real) [mm]", "#999999", paper_reported_errors_mm(), true});
+  write_path_plot_svg(o.out_prefix + ".svg",
+                      fmt::format("refloc-eval {}: position error (x, y) per scan [mm]", command), series);
+  fmt::print("wrote {}.csv and {}.svg{}\n", o.out_prefix, o.out_prefix,
+             o.json_file.empty() ? "" : " and " + o.json_file);
+  return 0;
+}
+
+}  // namespace refloc

@@ -1,0 +1,32 @@
+#pragma once
+// refloc-eval's two commands: load the world, the robot and the services' configs, run the
+// study in both modes, print and write the results.
+
+#include <unistd.h>
+
+#include <cstdint>
+#include <string>
+
+namespace refloc {
+
+/// The command line of refloc-eval.
+struct EvalOptions {
+  std::string world_file;
+  std::string robot_file = "deploy/config/robot.json";
+  std::string extractor_file = "deploy/config/reflector_extractor.json";
+  std::string matcher_file = "deploy/config/reflector_matcher.json";
+  std::string solver_file = "deploy/config/pose_solver.json";
+  double sigma_mm = 12.0;
+  double offset_mm = 0.0;
+  uint64_t seed = 1;
+  int repeats = 3;
+  int n = 1000;
+  std::string json_file;
+  std::string out_prefix;
+  bool progress = isatty(2) != 0;
+};
+
+/// command: "paper-table" or "random". Returns the exit code.
+int run_eval(const std::string& command, EvalOptions o);
+
+}  // namespace refloc

@@ -1,0 +1,25 @@
+#pragma once
+// refloc-eval's console tables, JSON, CSV and SVG of a study's result.
+
+#include "accuracy_study.hpp"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace refloc {
+
+/// A progress bar on stderr.
+void print_progress(size_t done, size_t total);
+/// One line of a mode's summary numbers.
+void print_summary(const char* name, const ModeSummary& s);
+/// The paper's Table 1 layout: per position the measurements, max errors, RMSE and CRLB.
+void print_paper_table(const StudyResult& r, const std::vector<Pose2>& poses, int repeats);
+/// Position errors of the published, not wrong, measurements of mode [mm].
+std::vector<Eigen::Vector2d> errors_mm(const StudyResult& r, PipelineMode mode);
+/// The paper's own Table 1 errors (measured minus actual), for the plot [mm].
+std::vector<Eigen::Vector2d> paper_reported_errors_mm();
+
+}  // namespace refloc
