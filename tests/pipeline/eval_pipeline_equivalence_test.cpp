@@ -234,7 +234,17 @@ TEST(EvalPipelineEquivalence, RecordedLogInLogOrderThroughThePipelineReproducesT
     const pose2d_t& mine = replayed[scan_order[i]];
     if (mine.status == pose2d_t::STATUS_OK) first_ok = std::min(first_ok, i);
     const auto it = recorded.find(scan_order[i]);
-    if (it != recorded.end() && differing_fields(mine, it->second).empty()) ++identical_all;
+    if (it != recorded.end()) {
+      const auto d = differing_fields(mine, it->second);
+      if (d.empty()) {
+        ++identical_all;
+      } else {
+        std::string fields;
+        for (const auto& f : d) fields += " " + f;
+        std::printf("scan %zu: status recorded %d, pipeline %d; differs in:%s\n", i, it->second.status,
+                    mine.status, fields.c_str());
+      }
+    }
     if (i < kColdStartScans || it == recorded.end()) continue;
     ++compared;
     if (differing_fields(mine, it->second).empty()) ++identical;

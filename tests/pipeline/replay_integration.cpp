@@ -141,7 +141,12 @@ void expect_reproduces_recording(const Recorded& recorded, const ReplayResult& r
     if (it == replay.laser_poses.end()) continue;
     const pose2d_t& replayed = it->second;
     if (replayed.status == pose2d_t::STATUS_OK) cold_start = std::min(cold_start, index);
-    if (index < kColdStartScans) continue;
+    if (index < kColdStartScans) {
+      if (replayed.status != live.status)
+        std::printf("%s: cold start scan %zu: recorded status %d, replayed %d\n", tag.c_str(), index,
+                    live.status, replayed.status);
+      continue;
+    }
     ++compared;
     if (replayed.status != live.status) {
       if (++reported <= 3)
