@@ -32,6 +32,7 @@ int run_eval(const std::string& command, EvalOptions o) {
   config.range_offset = o.offset_mm / 1000.0;
   config.seed = o.seed;
   config.repeats = paper_table ? o.repeats : 1;
+  config.scan_spacing = o.scan_spacing_s;
   std::mt19937_64 pose_rng(o.seed + 1000);
   const std::vector<Pose2> poses =
       paper_table ? paper_table_poses() : random_drivable_poses(world, o.n, 0.4, pose_rng);

@@ -21,6 +21,7 @@ struct EvalOptions {
   uint64_t seed = 1;
   int repeats = 3;
   int n = 1000;
+  double scan_spacing_s = 1.0;  ///< StudyConfig::scan_spacing [s]
   std::string json_file;
   std::string out_prefix;
   bool progress = isatty(2) != 0;

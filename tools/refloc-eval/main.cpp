@@ -27,6 +27,11 @@ void add_common_options(CLI::App* c, EvalOptions& o) {
       ->capture_default_str()
       ->check(CLI::Range(-100.0, 100.0));
   c->add_option("--seed", o.seed, "random seed")->capture_default_str();
+  c->add_option(
+       "--scan-spacing-s", o.scan_spacing_s,
+       "time between scans; above the matcher's prior_max_age_s (0.5) every scan starts without a prior")
+      ->capture_default_str()
+      ->check(CLI::Range(0.001, 3600.0));
   c->add_option("--json", o.json_file, "write the summary as JSON (CSV and SVG go next to it)");
   c->add_option("--out-prefix", o.out_prefix,
                 "path prefix of the CSV and SVG (default: next to --json, else logs/refloc-eval-<command>)");
