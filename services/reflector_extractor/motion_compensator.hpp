@@ -3,7 +3,7 @@
 // fresh enough (by message utime, either side of the scan); otherwise the detections
 // stay as measured and the scan is counted as one without fresh odometry.
 
-#include "common/body_twist.hpp"
+#include "common/odometry_sample.hpp"
 #include "common/reflector_detection.hpp"
 #include "common/se2.hpp"
 
@@ -12,12 +12,6 @@
 #include <vector>
 
 namespace refloc {
-
-/// The body twist of one odometry message.
-struct OdometrySample {
-  int64_t utime = 0;  ///< [us]
-  BodyTwist twist;    ///< [m/s, m/s, rad/s]
-};
 
 enum class CompensationOutcome {
   kOff,              ///< compensation disabled by configuration

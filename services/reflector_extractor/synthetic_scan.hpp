@@ -2,7 +2,7 @@
 // A deliberately tiny scan simulator (ray-circle / ray-segment intersection, Gaussian
 // range noise, RSSI falling off with incidence) so the extractor's tests, benchmark and
 // the roundness calibration tool have ground truth. The realistic renderer lives in
-// services/lms100_emulator/; this one only has to be simple and exactly known.
+// services/world_renderer/; this one only has to be simple and exactly known.
 
 #include "common/laser_scan.hpp"
 

@@ -1,18 +1,16 @@
 #include "reflector_matcher/prior_selector.hpp"
 
+#include "common/covariance_propagation.hpp"
+
 #include <cstdlib>
 
 namespace refloc {
 
 PosePrior prior_from_robot_pose(const FusedPose& pose, const Pose2& robot_T_laser) {
   Eigen::Matrix3d robot_cov = pose.covariance;
-  if (!robot_cov.allFinite()) robot_cov.setZero();
-  // d(map_T_laser)/d(map_T_robot)
-  const double c = std::cos(pose.map_T_robot.theta), s = std::sin(pose.map_T_robot.theta);
-  Eigen::Matrix3d j = Eigen::Matrix3d::Identity();
-  j(0, 2) = -s * robot_T_laser.x - c * robot_T_laser.y;
-  j(1, 2) = c * robot_T_laser.x - s * robot_T_laser.y;
-  return PosePrior{pose.map_T_robot * robot_T_laser, j * robot_cov * j.transpose()};
+  if (!robot_cov.allFinite()) robot_cov.setZero();  // the matcher's floors take over
+  return PosePrior{pose.map_T_robot * robot_T_laser,
+                   propagate_through_mount(pose.map_T_robot, robot_cov, robot_T_laser)};
 }
 
 PriorSelector::PriorSelector(const PriorSelectionConfig& config, const Pose2& robot_T_laser)

@@ -1,3 +1,4 @@
+// Longer than 300 lines because it holds one field-by-field fill and check per message type (12 types).
 // Two real processes exchange every refloc message type over UDP multicast
 // (run inside a private network namespace): this test publishes a sample of
 // each type, lcm_echo_peer decodes and republishes it, and the echo is checked

@@ -4,7 +4,7 @@
 #include "reflector_extractor/synthetic_scan.hpp"
 #include "roundness_calibration.hpp"
 
-#ifdef REFLOC_HAVE_LMS100_EMULATOR
+#ifdef REFLOC_HAVE_WORLD_RENDERER
 #include "world_renderer/scan_renderer.hpp"
 #endif
 
@@ -56,7 +56,7 @@ ReflectorScanRenderer make_renderer(const CalibrationOptions& o, std::mt19937_64
       scan = render_synthetic_scan(scene, config, local);
     };
   }
-#ifdef REFLOC_HAVE_LMS100_EMULATOR
+#ifdef REFLOC_HAVE_WORLD_RENDERER
   auto renderer = std::make_shared<sim::ScanRenderer>();
   return [renderer, &rng](double distance, double angle, LaserScan& scan) {
     sim::World world;
