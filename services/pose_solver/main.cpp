@@ -3,6 +3,7 @@
 // status are SolverNode's (make_laser_fix); this file converts.
 
 #include "pose_solver/solver_config_file.hpp"
+#include "pose_solver/solver_messages.hpp"
 #include "pose_solver/solver_node.hpp"
 
 #include "common/json_config.hpp"
@@ -16,24 +17,6 @@
 
 namespace refloc {
 namespace {
-
-MatchVerdict from_message_status(int8_t s) {
-  if (s == reflector_matches_t::STATUS_OK) return MatchVerdict::kOk;
-  return s == reflector_matches_t::STATUS_AMBIGUOUS ? MatchVerdict::kAmbiguous : MatchVerdict::kLost;
-}
-
-void to_message(const LaserFix& fix, pose2d_t& out) {
-  constexpr int8_t kStatus[] = {pose2d_t::STATUS_OK, pose2d_t::STATUS_DEGRADED, pose2d_t::STATUS_LOST,
-                                pose2d_t::STATUS_AMBIGUOUS};  // in LaserFixStatus order
-  out.utime = fix.utime;
-  out.status = kStatus[static_cast<int>(fix.status)];
-  out.x = fix.map_T_robot.x;
-  out.y = fix.map_T_robot.y;
-  out.theta = fix.map_T_robot.theta;
-  covariance_to_lcm(fix.covariance, out.covariance);
-  out.reflectors_used = fix.reflectors_used;
-  out.residual = fix.residual;
-}
 
 int run(const std::string& lcm_url, const std::string& config_path, const std::string& robot_path) {
   SolverServiceConfig config;
@@ -53,14 +36,9 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   std::vector<ReflectorMatch> matches;
   pose2d_t out{};
   runtime.subscribe<reflector_matches_t>(config.input_channel, [&](const reflector_matches_t& msg) {
-    // Each match carries its detection: the solver sees them as detections 0..n-1.
-    detections.clear();
-    matches.clear();
-    for (const reflector_match_t& m : msg.matches) {
-      matches.push_back({static_cast<int>(detections.size()), m.map_id, {m.map_x, m.map_y}, m.map_radius});
-      detections.push_back(from_lcm(m.detection));
-    }
-    const LaserFix& fix = node.on_matches(msg.utime, from_message_status(msg.status), detections, matches);
+    matches_from_message(msg, detections, matches);
+    const LaserFix& fix =
+        node.on_matches(msg.utime, match_verdict_from_message(msg.status), detections, matches);
     runtime.set_state(fix.ok() ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED,
                       fix.ok() ? "" : fix.degraded_detail());
     fix.for_each_counter([&](const char* name, int64_t by) { runtime.counter(name) += by; });

@@ -7,6 +7,7 @@
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
 #include "reflector_extractor/extractor_config_file.hpp"
+#include "reflector_extractor/extractor_messages.hpp"
 #include "reflector_extractor/extractor_node.hpp"
 
 #include <refloc/heartbeat_t.hpp>
@@ -18,16 +19,6 @@
 
 namespace refloc {
 namespace {
-
-void to_message(const ExtractorOutput& o, reflector_detections_t& out) {
-  out.utime = o.utime;
-  out.scan_counter = static_cast<int32_t>(o.scan_counter);
-  out.clusters_considered = o.stats.clusters_considered;
-  out.clusters_rejected = o.stats.rejected();
-  out.reflectors.clear();
-  for (const ReflectorDetection& d : o.detections) out.reflectors.push_back(to_lcm(d));
-  out.nreflectors = static_cast<int32_t>(out.reflectors.size());  // LCM trusts the length field
-}
 
 int run(const std::string& lcm_url, const std::string& config_path, const std::string& robot_path) {
   ExtractorServiceConfig config;
@@ -49,7 +40,7 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   LaserScan scan;
   reflector_detections_t out;
   runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
-    node.on_odometry({msg.utime, {msg.vx, msg.vy, msg.wz}});
+    node.on_odometry(odometry_twist_from_message(msg));
   });
   runtime.subscribe<laser_scan_t>(config.input_channel, [&](const laser_scan_t& msg) {
     if (!from_lcm(msg, scan)) {

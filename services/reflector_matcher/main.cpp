@@ -3,6 +3,7 @@
 // match and the state are MatcherNode's; this file converts.
 
 #include "reflector_matcher/matcher_config_file.hpp"
+#include "reflector_matcher/matcher_messages.hpp"
 #include "reflector_matcher/matcher_node.hpp"
 
 #include "common/lcm_conversions.hpp"
@@ -17,25 +18,6 @@
 
 namespace refloc {
 namespace {
-
-void to_message(const reflector_detections_t& in, const MatchResult& r, reflector_matches_t& out) {
-  out.utime = in.utime;
-  out.scan_counter = in.scan_counter;
-  out.status = static_cast<int8_t>(r.status);  // MatchStatus and MatchMode have the message's values
-  out.mode = static_cast<int8_t>(r.mode);
-  out.hypothesis_score = r.hypothesis_score;
-  out.runner_up_score = r.runner_up_score;
-  out.hypothesis_x = r.map_T_laser.x;
-  out.hypothesis_y = r.map_T_laser.y;
-  out.hypothesis_theta = r.map_T_laser.theta;
-  out.ndetections = static_cast<int32_t>(in.reflectors.size());
-  out.matches.clear();
-  for (const ReflectorMatch& m : r.matches) {
-    out.matches.push_back({in.reflectors[static_cast<size_t>(m.detection_index)], m.map_id,
-                           m.map_p_center.x(), m.map_p_center.y(), m.map_radius});
-  }
-  out.nmatches = static_cast<int32_t>(out.matches.size());  // encode trusts the length field
-}
 
 void log_startup(StartupEvent event, double window_s) {
   if (event == StartupEvent::kRelocalized)
@@ -56,15 +38,10 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   ServiceRuntime runtime("reflector_matcher", lcm_url);
   std::vector<ReflectorDetection> detections;
   reflector_matches_t out;
-  runtime.subscribe<pose2d_t>(config.prior_channel, [&](const pose2d_t& msg) {
-    node.on_pose({msg.utime,
-                  {msg.x, msg.y, msg.theta},
-                  covariance_from_lcm(msg.covariance),
-                  msg.status == pose2d_t::STATUS_OK});
-  });
+  runtime.subscribe<pose2d_t>(config.prior_channel,
+                              [&](const pose2d_t& msg) { node.on_pose(fused_pose_from_message(msg)); });
   runtime.subscribe<reflector_detections_t>(config.input_channel, [&](const reflector_detections_t& msg) {
-    detections.clear();
-    for (const reflector_t& r : msg.reflectors) detections.push_back(from_lcm(r));
+    detections_from_message(msg, detections);
     const MatcherOutput& o = node.on_detections(msg.utime, detections);
     log_startup(o.startup_event, config.prior.relocalize_on_start);
     o.for_each_counter([&](const char* name, int64_t by) { runtime.counter(name) += by; });

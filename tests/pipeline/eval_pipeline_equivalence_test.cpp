@@ -1,7 +1,8 @@
 // refloc-eval's LocalizationPipeline is the services' chain, not a copy of it:
 //  1. a scan sequence rendered along a drive, with ODOMETRY and POSE interleaved in time
 //     order, run through ExtractorNode -> REFLECTORS -> MatcherNode -> REFLECTOR_MATCHES ->
-//     SolverNode exactly as the three mains do (every message encoded and decoded by LCM)
+//     SolverNode exactly as the three mains do (their own edge conversions, every message
+//     encoded and decoded by LCM)
 //     and through the pipeline: LASER_POSE identical field by field;
 //  2. logs/samples/replay_demo_4s.lcm (recorded from the service processes) fed to the
 //     pipeline in log order: the recorded LASER_POSE reproduced after the matcher's cold start.
@@ -10,6 +11,9 @@
 #include "common/reflector_map.hpp"
 #include "common/robot_config.hpp"
 #include "localization_pipeline.hpp"
+#include "pose_solver/solver_messages.hpp"
+#include "reflector_extractor/extractor_messages.hpp"
+#include "reflector_matcher/matcher_messages.hpp"
 #include "world_renderer/scan_renderer.hpp"
 #include "world_renderer/world_loader.hpp"
 
@@ -43,21 +47,6 @@ Message over_the_wire(const Message& m) {
   return out;
 }
 
-pose2d_t laser_pose_of(const LaserFix& fix) {
-  constexpr int8_t kStatus[] = {pose2d_t::STATUS_OK, pose2d_t::STATUS_DEGRADED, pose2d_t::STATUS_LOST,
-                                pose2d_t::STATUS_AMBIGUOUS};
-  pose2d_t p{};
-  p.utime = fix.utime;
-  p.status = kStatus[static_cast<int>(fix.status)];
-  p.x = fix.map_T_robot.x;
-  p.y = fix.map_T_robot.y;
-  p.theta = fix.map_T_robot.theta;
-  covariance_to_lcm(fix.covariance, p.covariance);
-  p.reflectors_used = fix.reflectors_used;
-  p.residual = fix.residual;
-  return p;
-}
-
 std::vector<std::string> differing_fields(const pose2d_t& a, const pose2d_t& b) {
   std::vector<std::string> d;
   if (a.utime != b.utime) d.push_back("utime");
@@ -72,10 +61,6 @@ std::vector<std::string> differing_fields(const pose2d_t& a, const pose2d_t& b) 
   return d;
 }
 
-FusedPose fused_of(const pose2d_t& m) {
-  return {m.utime, {m.x, m.y, m.theta}, covariance_from_lcm(m.covariance), m.status == pose2d_t::STATUS_OK};
-}
-
 /// The three services as their mains run them, each message crossing LCM.
 class ServiceChain {
  public:
@@ -85,44 +70,30 @@ class ServiceChain {
         solver_(c.solver.solver, robot_T_laser) {}
 
   void on_odometry(const odometry_t& sent) {
-    const odometry_t m = over_the_wire(sent);
-    extractor_.on_odometry({m.utime, {m.vx, m.vy, m.wz}});
+    extractor_.on_odometry(odometry_twist_from_message(over_the_wire(sent)));
   }
-  void on_pose(const pose2d_t& sent) { matcher_.on_pose(fused_of(over_the_wire(sent))); }
+  void on_pose(const pose2d_t& sent) { matcher_.on_pose(fused_pose_from_message(over_the_wire(sent))); }
   pose2d_t on_scan(const laser_scan_t& sent) {
     LaserScan scan;
     EXPECT_TRUE(from_lcm(over_the_wire(sent), scan));
-    const ExtractorOutput& e = extractor_.on_scan(scan);
     reflector_detections_t reflectors{};
-    reflectors.utime = e.utime;
-    for (const ReflectorDetection& d : e.detections) reflectors.reflectors.push_back(to_lcm(d));
-    reflectors.nreflectors = static_cast<int32_t>(reflectors.reflectors.size());
+    to_message(extractor_.on_scan(scan), reflectors);
     reflectors = over_the_wire(reflectors);
 
     std::vector<ReflectorDetection> detections;
-    for (const reflector_t& r : reflectors.reflectors) detections.push_back(from_lcm(r));
-    const MatcherOutput& m = matcher_.on_detections(reflectors.utime, detections);
+    detections_from_message(reflectors, detections);
     reflector_matches_t matches{};
-    matches.utime = reflectors.utime;
-    matches.status = static_cast<int8_t>(m.result.status);
-    for (const ReflectorMatch& r : m.result.matches)
-      matches.matches.push_back({reflectors.reflectors[static_cast<size_t>(r.detection_index)], r.map_id,
-                                 r.map_p_center.x(), r.map_p_center.y(), r.map_radius});
-    matches.nmatches = static_cast<int32_t>(matches.matches.size());
+    to_message(reflectors, matcher_.on_detections(reflectors.utime, detections).result, matches);
     matches = over_the_wire(matches);
 
     std::vector<ReflectorDetection> matched;
     std::vector<ReflectorMatch> solver_matches;
-    for (const reflector_match_t& r : matches.matches) {
-      solver_matches.push_back(
-          {static_cast<int>(matched.size()), r.map_id, {r.map_x, r.map_y}, r.map_radius});
-      matched.push_back(from_lcm(r.detection));
-    }
-    const MatchVerdict verdict = matches.status == reflector_matches_t::STATUS_OK ? MatchVerdict::kOk
-                                 : matches.status == reflector_matches_t::STATUS_AMBIGUOUS
-                                     ? MatchVerdict::kAmbiguous
-                                     : MatchVerdict::kLost;
-    return over_the_wire(laser_pose_of(solver_.on_matches(matches.utime, verdict, matched, solver_matches)));
+    matches_from_message(matches, matched, solver_matches);
+    pose2d_t laser_pose{};
+    to_message(solver_.on_matches(matches.utime, match_verdict_from_message(matches.status), matched,
+                                  solver_matches),
+               laser_pose);
+    return over_the_wire(laser_pose);
   }
 
  private:
@@ -157,7 +128,7 @@ TEST(EvalPipelineEquivalence,
     odo.vy = twist.vy;
     odo.wz = twist.wz;
     services.on_odometry(odo);
-    pipeline.on_odometry({odo.utime, twist});
+    pipeline.on_odometry(odometry_twist_from_message(over_the_wire(odo)));
     pose2d_t pose{};
     pose.utime = t0 + t;
     const Pose2 p = truth_at(t);
@@ -166,7 +137,7 @@ TEST(EvalPipelineEquivalence,
     pose.covariance[8] = std::pow(0.5 * M_PI / 180.0, 2);
     pose.status = pose2d_t::STATUS_OK;
     services.on_pose(pose);
-    pipeline.on_pose(fused_of(over_the_wire(pose)));
+    pipeline.on_pose(fused_pose_from_message(over_the_wire(pose)));
     if (t % 20'000 != 0) continue;
     LaserScan rendered;
     renderer.render(
@@ -177,7 +148,8 @@ TEST(EvalPipelineEquivalence,
     LaserScan scan;
     ASSERT_TRUE(from_lcm(over_the_wire(published), scan));
     const pose2d_t via_services = services.on_scan(published);
-    const pose2d_t via_pipeline = laser_pose_of(*pipeline.on_scan(scan).fix);
+    pose2d_t via_pipeline{};
+    to_message(*pipeline.on_scan(scan).fix, via_pipeline);
     ++compared;
     if (via_services.status == pose2d_t::STATUS_OK || via_services.status == pose2d_t::STATUS_DEGRADED)
       ++with_pose;
@@ -213,15 +185,16 @@ TEST(EvalPipelineEquivalence, RecordedLogInLogOrderThroughThePipelineReproducesT
       if (m.decode(e->data, 0, e->datalen) < 0) continue;
       LaserScan scan;
       ASSERT_TRUE(from_lcm(m, scan));
-      const pose2d_t p = laser_pose_of(*pipeline.on_scan(scan).fix);
+      pose2d_t p{};
+      to_message(*pipeline.on_scan(scan).fix, p);
       replayed[p.utime] = p;
       scan_order.push_back(p.utime);
     } else if (e->channel == "ODOMETRY") {
       odometry_t m;
-      if (m.decode(e->data, 0, e->datalen) >= 0) pipeline.on_odometry({m.utime, {m.vx, m.vy, m.wz}});
+      if (m.decode(e->data, 0, e->datalen) >= 0) pipeline.on_odometry(odometry_twist_from_message(m));
     } else if (e->channel == "POSE") {
       pose2d_t m;
-      if (m.decode(e->data, 0, e->datalen) >= 0) pipeline.on_pose(fused_of(m));
+      if (m.decode(e->data, 0, e->datalen) >= 0) pipeline.on_pose(fused_pose_from_message(m));
     } else if (e->channel == "LASER_POSE") {
       pose2d_t m;
       if (m.decode(e->data, 0, e->datalen) >= 0) recorded[m.utime] = m;

@@ -29,13 +29,13 @@ TEST(ExtractorNode, DetectionsAreTheExtractorsCompensatedWithFreshOdometry) {
   const Pose2 mount{0.2, 0.0, 0.0};
   ExtractorNode node(config, mount);
   const LaserScan scan = scan_with_one_reflector(1);
-  node.on_odometry({scan.utime - 5'000, {1.0, 0.0, 0.5}});
+  node.on_odometry({scan.utime - 5'000, {1.0, 0.0, 0.5}, Pose2{}, 0.0});
   const ExtractorOutput& out = node.on_scan(scan);
 
   ReflectorExtractor extractor(config.extractor);
   std::vector<ReflectorDetection> expected = extractor.extract(scan);
   MotionCompensator compensator(true, config.odometry_max_age, mount);
-  compensator.on_odometry({scan.utime - 5'000, {1.0, 0.0, 0.5}});
+  compensator.on_odometry({scan.utime - 5'000, {1.0, 0.0, 0.5}, Pose2{}, 0.0});
   compensator.apply(expected, scan.utime);
   ASSERT_EQ(out.detections.size(), 1u);
   EXPECT_EQ(out.compensation, CompensationOutcome::kCompensated);
@@ -47,7 +47,7 @@ TEST(ExtractorNode, DetectionsAreTheExtractorsCompensatedWithFreshOdometry) {
 TEST(ExtractorNode, AScanWithoutFreshOdometryBumpsScansWithoutFreshOdometry) {
   ExtractorNode node(ExtractorServiceConfig{}, Pose2{});
   const LaserScan scan = scan_with_one_reflector(2);
-  node.on_odometry({scan.utime - 300'000, {1.0, 0.0, 0.0}});  // 0.3 s old, max age 0.2 s
+  node.on_odometry({scan.utime - 300'000, {1.0, 0.0, 0.0}, Pose2{}, 0.0});  // 0.3 s old, max age 0.2 s
   const auto counters = counters_of(node.on_scan(scan));
   EXPECT_EQ(counters.at("scans_without_fresh_odometry"), 1);
   EXPECT_EQ(counters.count("scans_without_reflectors"), 0u);

@@ -16,7 +16,7 @@ std::vector<ReflectorDetection> one_detection(int64_t utime) {
 }
 
 const Pose2 kMount{0.2, 0.0, 0.0};
-const OdometrySample kDriving{1'000'000, {1.5, 0.5, 0.2}};
+const OdometrySample kDriving{1'000'000, {1.5, 0.5, 0.2}, Pose2{}, 0.0};
 
 TEST(MotionCompensator, OdometryWithinMaxAgeEitherSideOfTheScanCompensatesExactlyLikeCompensateMotion) {
   MotionCompensator compensator(true, 0.2, kMount);

@@ -1,0 +1,47 @@
+#pragma once
+// The solver's LCM edge: the message <-> library conversions main.cpp makes. Header
+// only and outside the LCM-free library, so a test that runs the chain across LCM
+// (tests/pipeline) converts exactly as the service does.
+
+#include "common/lcm_conversions.hpp"
+#include "pose_solver/solver_node.hpp"
+
+#include <refloc/pose2d_t.hpp>
+#include <refloc/reflector_matches_t.hpp>
+
+#include <vector>
+
+namespace refloc {
+
+inline MatchVerdict match_verdict_from_message(int8_t status) {
+  if (status == reflector_matches_t::STATUS_OK) return MatchVerdict::kOk;
+  return status == reflector_matches_t::STATUS_AMBIGUOUS ? MatchVerdict::kAmbiguous : MatchVerdict::kLost;
+}
+
+/// The matches of one REFLECTOR_MATCHES message. Each match carries its detection, so
+/// the solver sees them as detections 0..n-1.
+inline void matches_from_message(const reflector_matches_t& msg, std::vector<ReflectorDetection>& detections,
+                                 std::vector<ReflectorMatch>& matches) {
+  detections.clear();
+  matches.clear();
+  for (const reflector_match_t& m : msg.matches) {
+    matches.push_back({static_cast<int>(detections.size()), m.map_id, {m.map_x, m.map_y}, m.map_radius});
+    detections.push_back(from_lcm(m.detection));
+  }
+}
+
+/// LASER_POSE from one fix.
+inline void to_message(const LaserFix& fix, pose2d_t& out) {
+  constexpr int8_t kStatus[] = {pose2d_t::STATUS_OK, pose2d_t::STATUS_DEGRADED, pose2d_t::STATUS_LOST,
+                                pose2d_t::STATUS_AMBIGUOUS};  // in LaserFixStatus order
+  out.utime = fix.utime;
+  out.status = kStatus[static_cast<int>(fix.status)];
+  out.x = fix.map_T_robot.x;
+  out.y = fix.map_T_robot.y;
+  out.theta = fix.map_T_robot.theta;
+  covariance_to_lcm(fix.covariance, out.covariance);
+  out.reflectors_used = fix.reflectors_used;
+  out.residual = fix.residual;
+}
+
+}  // namespace refloc
