@@ -161,13 +161,7 @@ void Lms100Device::set_scan_config(const std::vector<std::string_view>& t, uint6
   reply = "sAN mLMPsetscancfg ";
   append_cola_hex(reply, error);
   reply += ' ';
-  append_cola_hex(reply, frequency_1e2hz_);
-  reply += " 1 ";
-  append_cola_hex(reply, resolution_1e4deg_);
-  reply += ' ';
-  append_cola_hex_i32(reply, scan_start_1e4deg_);
-  reply += ' ';
-  append_cola_hex_i32(reply, scan_stop_1e4deg_);
+  append_scan_config(reply);
 }
 
 void Lms100Device::handle_event(const std::vector<std::string_view>& t, std::string& reply) {

@@ -94,6 +94,7 @@ class Lms100Device {
   void set_scan_config(const std::vector<std::string_view>& t, uint64_t now_us, std::string& reply);
   void write_output_range(const std::vector<std::string_view>& t, std::string& reply);
   void write_data_config(const std::vector<std::string_view>& t, std::string& reply);
+  void append_scan_config(std::string& reply) const;
   void append_status(uint64_t now_us, std::string& reply) const;
 
   Lms100DeviceConfig config_;

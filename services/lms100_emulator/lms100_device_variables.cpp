@@ -28,13 +28,7 @@ void Lms100Device::handle_read(const std::vector<std::string_view>& t, uint64_t 
   reply.append(name.data(), name.size());
   reply += ' ';
   if (name == "LMPscancfg") {
-    append_cola_hex(reply, frequency_1e2hz_);
-    reply += " 1 ";
-    append_cola_hex(reply, resolution_1e4deg_);
-    reply += ' ';
-    append_cola_hex_i32(reply, scan_start_1e4deg_);
-    reply += ' ';
-    append_cola_hex_i32(reply, scan_stop_1e4deg_);
+    append_scan_config(reply);
   } else if (name == "LMPoutputRange") {
     reply += "1 ";
     append_cola_hex(reply, config_.output_range_reports_half_degree ? 5000u : resolution_1e4deg_);
@@ -75,6 +69,18 @@ void Lms100Device::handle_read(const std::vector<std::string_view>& t, uint64_t 
     reply.clear();
     action = Action::reply_with_scan;
   }
+}
+
+// "<frequency> 1 <resolution> <start> <stop>": one sector, as the read of LMPscancfg and the
+// answer to mLMPsetscancfg both carry it.
+void Lms100Device::append_scan_config(std::string& reply) const {
+  append_cola_hex(reply, frequency_1e2hz_);
+  reply += " 1 ";
+  append_cola_hex(reply, resolution_1e4deg_);
+  reply += ' ';
+  append_cola_hex_i32(reply, scan_start_1e4deg_);
+  reply += ' ';
+  append_cola_hex_i32(reply, scan_stop_1e4deg_);
 }
 
 void Lms100Device::append_status(uint64_t now_us, std::string& reply) const {

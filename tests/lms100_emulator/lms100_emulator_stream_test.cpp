@@ -43,15 +43,18 @@ TEST(Lms100EmulatorStream, FiftyHertzScansArriveEveryTwentyMillisecondsWithCount
   EXPECT_EQ(scans[0].data.time_of_transmission_us - scans[0].data.time_since_startup_us, 16028u);
   EXPECT_EQ(scans[0].data.measurement_frequency_1e1khz, 360u);
   EXPECT_EQ(scans[0].data.scan_frequency_1e2hz, 5000u);
-  // Host arrival follows the device clock: the receive-minus-device offset stays put (no drift).
+  // Host arrival follows the device clock: the receive-minus-device offset does not drift.
+  // Judged on the lower envelope (the least-delayed scan of each half): a busy host (CI under
+  // ASan) only ever delays a scan, so one late scan says nothing about the emulator's pacing,
+  // while a scheduler that sleeps 20 ms after each send drifts by more than 5 ms in 50 scans.
   std::vector<double> offsets_ms;
   for (const ReceivedScan& s : scans) {
     offsets_ms.push_back((s.receive_mono_us - int64_t{s.data.time_since_startup_us}) / 1000.0);
   }
-  const auto [lo, hi] = std::minmax_element(offsets_ms.begin(), offsets_ms.end());
-  EXPECT_LT(*hi - *lo, 8.0) << "arrival jitter/drift over 1 s [ms]";
-  const double span_ms = (scans.back().receive_mono_us - scans.front().receive_mono_us) / 1000.0;
-  EXPECT_NEAR(span_ms, 1000.0, 8.0);
+  const auto half = offsets_ms.begin() + static_cast<std::ptrdiff_t>(offsets_ms.size() / 2);
+  const double first_half_min_ms = *std::min_element(offsets_ms.begin(), half);
+  const double second_half_min_ms = *std::min_element(half, offsets_ms.end());
+  EXPECT_NEAR(second_half_min_ms, first_half_min_ms, 5.0) << "receive-minus-device drift over 1 s [ms]";
 }
 
 TEST(Lms100EmulatorStream, TelegramCarriesTheSourceValuesAtTheirBeamAngles) {

@@ -14,6 +14,7 @@
 #include "pose_solver/solver_messages.hpp"
 #include "reflector_extractor/extractor_messages.hpp"
 #include "reflector_matcher/matcher_messages.hpp"
+#include "tests/pipeline/recorded_log_reader.hpp"
 #include "world_renderer/scan_renderer.hpp"
 #include "world_renderer/world_loader.hpp"
 
@@ -175,31 +176,23 @@ TEST(EvalPipelineEquivalence, RecordedLogInLogOrderThroughThePipelineReproducesT
   const Pose2 robot_T_laser = load_robot_config(kConfig + "/robot.json").robot_T_laser;
   LocalizationPipeline pipeline(PipelineMode::kDefault, configs, map, robot_T_laser);
 
-  lcm::LogFile log(std::string(REFLOC_SOURCE_DIR) + "/logs/samples/replay_demo_4s.lcm", "r");
-  ASSERT_TRUE(log.good());
   std::map<int64_t, pose2d_t> recorded, replayed;
   std::vector<int64_t> scan_order;
-  while (const lcm::LogEvent* e = log.readNextEvent()) {
-    if (e->channel == "LMS100_SCAN") {
-      laser_scan_t m;
-      if (m.decode(e->data, 0, e->datalen) < 0) continue;
-      LaserScan scan;
-      ASSERT_TRUE(from_lcm(m, scan));
-      pose2d_t p{};
-      to_message(*pipeline.on_scan(scan).fix, p);
-      replayed[p.utime] = p;
-      scan_order.push_back(p.utime);
-    } else if (e->channel == "ODOMETRY") {
-      odometry_t m;
-      if (m.decode(e->data, 0, e->datalen) >= 0) pipeline.on_odometry(odometry_twist_from_message(m));
-    } else if (e->channel == "POSE") {
-      pose2d_t m;
-      if (m.decode(e->data, 0, e->datalen) >= 0) pipeline.on_pose(fused_pose_from_message(m));
-    } else if (e->channel == "LASER_POSE") {
-      pose2d_t m;
-      if (m.decode(e->data, 0, e->datalen) >= 0) recorded[m.utime] = m;
-    }
-  }
+  test::RecordedLogReader reader;
+  reader.on<laser_scan_t>("LMS100_SCAN", [&](const laser_scan_t& m) {
+    LaserScan scan;
+    ASSERT_TRUE(from_lcm(m, scan));
+    pose2d_t p{};
+    to_message(*pipeline.on_scan(scan).fix, p);
+    replayed[p.utime] = p;
+    scan_order.push_back(p.utime);
+  });
+  reader.on<odometry_t>("ODOMETRY",
+                        [&](const odometry_t& m) { pipeline.on_odometry(odometry_twist_from_message(m)); });
+  reader.on<pose2d_t>("POSE", [&](const pose2d_t& m) { pipeline.on_pose(fused_pose_from_message(m)); });
+  reader.on<pose2d_t>("LASER_POSE", [&](const pose2d_t& m) { recorded[m.utime] = m; });
+  ASSERT_TRUE(reader.read(std::string(REFLOC_SOURCE_DIR) + "/logs/samples/replay_demo_4s.lcm"));
+  ASSERT_EQ(reader.undecodable(), 0);
   constexpr size_t kColdStartScans = 60;  // 1.2 s at 50 Hz, as in replay_integration
   size_t compared = 0, identical = 0, same_status = 0, first_ok = scan_order.size(), identical_all = 0;
   double worst_xy = 0.0, worst_theta = 0.0;

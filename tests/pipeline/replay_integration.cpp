@@ -8,6 +8,7 @@
 // must agree.) Services take time from message utime, never from
 // the clock, so this holds.
 
+#include "tests/pipeline/recorded_log_reader.hpp"
 #include "tests/tools/child_process.hpp"
 
 #include <gtest/gtest.h>
@@ -38,17 +39,12 @@ struct Recorded {
 
 Recorded read_recorded(const std::string& path) {
   Recorded r;
-  lcm::LogFile log(path, "r");
-  EXPECT_TRUE(log.good()) << path;
-  while (const lcm::LogEvent* e = log.readNextEvent()) {
-    if (e->channel == "LASER_POSE") {
-      pose2d_t p{};
-      if (p.decode(e->data, 0, e->datalen) >= 0) r.laser_poses[p.utime] = p;
-    } else if (e->channel == "ODOMETRY") {
-      odometry_t o{};
-      if (o.decode(e->data, 0, e->datalen) >= 0) r.max_speed = std::max(r.max_speed, std::hypot(o.vx, o.vy));
-    }
-  }
+  test::RecordedLogReader reader;
+  reader.on<pose2d_t>("LASER_POSE", [&](const pose2d_t& p) { r.laser_poses[p.utime] = p; });
+  reader.on<odometry_t>(
+      "ODOMETRY", [&](const odometry_t& o) { r.max_speed = std::max(r.max_speed, std::hypot(o.vx, o.vy)); });
+  EXPECT_TRUE(reader.read(path)) << path;
+  EXPECT_EQ(reader.undecodable(), 0) << path;
   return r;
 }
 
