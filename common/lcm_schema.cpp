@@ -1,0 +1,180 @@
+#include "common/lcm_schema.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+
+namespace refloc {
+namespace {
+
+/// No refloc type has more members; the generator's tables are checked against it on use.
+constexpr size_t kMaxFields = 64;
+
+int64_t element_bytes(LcmFieldKind kind) {
+  switch (kind) {
+    case LcmFieldKind::kInt8:
+    case LcmFieldKind::kByte:
+    case LcmFieldKind::kBoolean:
+      return 1;
+    case LcmFieldKind::kInt16:
+      return 2;
+    case LcmFieldKind::kInt32:
+    case LcmFieldKind::kFloat:
+      return 4;
+    case LcmFieldKind::kInt64:
+    case LcmFieldKind::kDouble:
+      return 8;
+    case LcmFieldKind::kString:
+      return 5;  // int32 length + the NUL of an empty string: the least one string takes
+    case LcmFieldKind::kStruct:
+      return 0;
+  }
+  return 0;
+}
+
+/// LCM integers are big-endian two's complement.
+int64_t read_signed(const uint8_t* p, int64_t bytes) {
+  uint64_t v = 0;
+  for (int64_t i = 0; i < bytes; ++i) v = (v << 8) | p[i];
+  const int shift = static_cast<int>(64 - 8 * bytes);
+  return static_cast<int64_t>(v << shift) >> shift;
+}
+
+class DatagramWalk {
+ public:
+  DatagramWalk(const uint8_t* data, size_t size) : data_(data), size_(static_cast<int64_t>(size)) {}
+
+  int64_t left() const { return size_ - pos_; }
+  int64_t pos() const { return pos_; }
+  const uint8_t* here() const { return data_ + pos_; }
+  void skip(int64_t bytes) { pos_ += bytes; }
+
+  /// The struct's members from the current position; false with reason set on the first lie.
+  bool walk_struct(const LcmSchema& schema, std::string& reason) {
+    if (schema.field_count > kMaxFields) {
+      reason = fmt::format("{} has {} members, the checker handles {}", schema.type_name, schema.field_count,
+                           kMaxFields);
+      return false;
+    }
+    std::array<int64_t, kMaxFields> integer_values{};
+    for (size_t i = 0; i < schema.field_count; ++i) {
+      const LcmFieldSchema& field = schema.fields[i];
+      int64_t count = field.fixed_count;
+      if (field.length_field >= 0 && !variable_count(schema, field, integer_values, count, reason))
+        return false;
+      if (field.kind == LcmFieldKind::kStruct) {
+        if (!walk_structs(field, count, reason)) return false;
+      } else if (field.kind == LcmFieldKind::kString) {
+        if (!walk_strings(field, count, reason)) return false;
+      } else {
+        const int64_t bytes = element_bytes(field.kind);
+        if (count * bytes > left()) {
+          reason = field.length_field >= 0 ? fmt::format("{}[] of {} needs {} bytes, {} left", field.name,
+                                                         count, count * bytes, left())
+                                           : fmt::format("truncated at {}: needs {} bytes, {} left",
+                                                         field.name, count * bytes, left());
+          return false;
+        }
+        if (field.fixed_count == 1 && field.kind != LcmFieldKind::kFloat &&
+            field.kind != LcmFieldKind::kDouble)
+          integer_values[i] = read_signed(here(), bytes);
+        skip(count * bytes);
+      }
+    }
+    return true;
+  }
+
+ private:
+  bool variable_count(const LcmSchema& schema, const LcmFieldSchema& field,
+                      const std::array<int64_t, kMaxFields>& integer_values, int64_t& count,
+                      std::string& reason) {
+    const auto length_index = static_cast<size_t>(field.length_field);
+    const char* length_name = length_index < schema.field_count ? schema.fields[length_index].name : "?";
+    count = length_index < kMaxFields ? integer_values[length_index] : -1;
+    if (count < 0) {
+      reason = fmt::format("{} = {} declared, {} bytes left", length_name, count, left());
+      return false;
+    }
+    if (count > field.max_count) {
+      reason =
+          fmt::format("{} = {} declared, max {} ({}[])", length_name, count, field.max_count, field.name);
+      return false;
+    }
+    const int64_t least =
+        field.kind == LcmFieldKind::kStruct ? field.nested->min_encoded_bytes : element_bytes(field.kind);
+    if (count * least > left()) {
+      reason = fmt::format("{} = {} declared, {}[] needs at least {} bytes, {} left", length_name, count,
+                           field.name, count * least, left());
+      return false;
+    }
+    return true;
+  }
+
+  bool walk_strings(const LcmFieldSchema& field, int64_t count, std::string& reason) {
+    for (int64_t k = 0; k < count; ++k) {
+      const std::string name =
+          field.length_field >= 0 ? fmt::format("{}[{}]", field.name, k) : std::string(field.name);
+      if (left() < 4) {
+        reason = fmt::format("truncated at {}: needs 4 bytes for its length, {} left", name, left());
+        return false;
+      }
+      const int64_t declared = read_signed(here(), 4);  // characters + the NUL
+      skip(4);
+      if (declared < 1) {
+        reason = fmt::format("{}: string length {} declared (at least 1, the NUL)", name, declared);
+        return false;
+      }
+      if (declared - 1 > field.max_string_chars) {
+        reason = fmt::format("{}: string of {} characters declared, max {}", name, declared - 1,
+                             field.max_string_chars);
+        return false;
+      }
+      if (declared > left()) {
+        reason = fmt::format("{}: string of {} bytes declared, {} bytes left", name, declared, left());
+        return false;
+      }
+      if (here()[declared - 1] != 0) {
+        reason = fmt::format("{}: string does not end in a NUL", name);
+        return false;
+      }
+      skip(declared);
+    }
+    return true;
+  }
+
+  bool walk_structs(const LcmFieldSchema& field, int64_t count, std::string& reason) {
+    for (int64_t k = 0; k < count; ++k) {
+      if (!walk_struct(*field.nested, reason)) {
+        reason = (field.fixed_count == 1 ? fmt::format("{}.", field.name)
+                                         : fmt::format("{}[{}].", field.name, k)) +
+                 reason;
+        return false;
+      }
+    }
+    return true;
+  }
+
+  const uint8_t* data_;
+  int64_t size_;
+  int64_t pos_ = 0;
+};
+
+}  // namespace
+
+std::string check_lcm_datagram(const LcmSchema& schema, const uint8_t* data, size_t size) {
+  constexpr size_t kFingerprintBytes = 8;
+  if (size < kFingerprintBytes)
+    return fmt::format("{} bytes, shorter than the 8-byte fingerprint of {}", size, schema.type_name);
+  if (size > static_cast<size_t>(INT32_MAX)) return fmt::format("{} bytes, more than LCM can carry", size);
+  const auto fingerprint = static_cast<uint64_t>(read_signed(data, 8));
+  if (fingerprint != schema.fingerprint)
+    return fmt::format("fingerprint {:016x} is not {}'s {:016x}", fingerprint, schema.type_name,
+                       schema.fingerprint);
+  DatagramWalk walk(data + kFingerprintBytes, size - kFingerprintBytes);
+  std::string reason;
+  if (!walk.walk_struct(schema, reason)) return reason;
+  if (walk.left() != 0) return fmt::format("{} bytes after the end of the {}", walk.left(), schema.type_name);
+  return {};
+}
+
+}  // namespace refloc
