@@ -1,6 +1,7 @@
 #include "common/service_runtime.hpp"
 
 #include "common/clock.hpp"
+#include "common/lcm_url.hpp"
 
 #include <spdlog/sinks/stdout_color_sinks.h>
 #ifdef REFLOC_HAVE_SYSTEMD
@@ -50,12 +51,22 @@ int64_t watchdog_half_period_us() {
   return 0;
 }
 
+/// The receive buffer the kernel grants the URL's socket [bytes] when it is less than asked
+/// (one WARN naming the sysctl); 0 when granted or unknown. LCM 1.3.1 hides its socket, so
+/// net.core.rmem_max is what can be checked.
+int64_t receive_buffer_clamped_to_bytes(const LcmUrl& url) {
+  if (url.recv_buf_size_bytes <= 0) return 0;
+  const ReceiveBufferCheck buffer =
+      check_receive_buffer(url.recv_buf_size_bytes, read_rmem_max().value_or(-1));
+  if (!buffer.clamped) return 0;
+  spdlog::warn("{}", buffer.warning);
+  return buffer.granted_bytes;
+}
+
 }  // namespace
 
 std::string resolve_lcm_url(const std::string& explicit_url) {
-  if (!explicit_url.empty()) return explicit_url;
-  if (const char* env = std::getenv("LCM_DEFAULT_URL"); env && *env) return env;
-  return "udpm://239.255.76.67:7667?ttl=0";
+  return resolve_lcm_url(explicit_url, std::getenv("LCM_DEFAULT_URL")).url;
 }
 
 void setup_logging(const std::string& service_name, bool verbose) {
@@ -69,12 +80,17 @@ void setup_logging(const std::string& service_name, bool verbose) {
 
 ServiceRuntime::ServiceRuntime(std::string service_name, const std::string& lcm_url)
     : name_(std::move(service_name)), start_monotonic_us_(monotonic_us()) {
-  const std::string url = resolve_lcm_url(lcm_url);
+  const LcmUrl lcm_url_used =
+      resolve_lcm_url(lcm_url, std::getenv("LCM_DEFAULT_URL"));  // ConfigError: exit 2
+  const std::string url = lcm_url_used.url;
   lcm_ = std::make_unique<lcm::LCM>(url);
   if (!lcm_->good()) {
     throw std::runtime_error("cannot open LCM at '" + url +
                              "' (is there a multicast route? try: ip route add 224.0.0.0/4 dev lo)");
   }
+  // Only when clamped: the heartbeat then says how small the buffer is (non-zero counters show as errors).
+  if (const int64_t clamped_to_bytes = receive_buffer_clamped_to_bytes(lcm_url_used); clamped_to_bytes > 0)
+    counter("lcm_recv_buf_clamped_to_bytes") = clamped_to_bytes;
   install_signal_handlers();
   add_periodic(1.0, [this] { publish_heartbeat(); });
   spdlog::info("started, pid {}, LCM {}", getpid(), url);

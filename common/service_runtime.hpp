@@ -20,8 +20,9 @@
 
 namespace refloc {
 
-/// The URL to use: the explicit one if not empty, else $LCM_DEFAULT_URL, else LCM's
-/// default with ttl=0 so nothing leaves the host.
+/// The URL to open: the explicit one if not empty, else $LCM_DEFAULT_URL, else
+/// kLcmDefaultUrl (ttl=0); validated, recv_buf_size added to udpm (common/lcm_url.hpp).
+/// Throws ConfigError (exit 2 under guarded_main) for an invalid URL.
 std::string resolve_lcm_url(const std::string& explicit_url);
 
 /// Send log lines of this process to stderr, prefixed with the service name.
@@ -29,7 +30,9 @@ void setup_logging(const std::string& service_name, bool verbose = false);
 
 class ServiceRuntime {
  public:
-  /// Throws std::runtime_error when LCM cannot be created (bad URL, no multicast route).
+  /// Throws ConfigError for an invalid URL, std::runtime_error when LCM cannot be created
+  /// (no multicast route). WARNs, and counts lcm_recv_buf_clamped_to_bytes, when the kernel
+  /// grants less receive buffer than the URL asks.
   ServiceRuntime(std::string service_name, const std::string& lcm_url);
   ~ServiceRuntime();
   ServiceRuntime(const ServiceRuntime&) = delete;
