@@ -1,7 +1,7 @@
 #pragma once
 // Writes the LMDscandata telegram (sSN stream event or sRA poll reply) exactly as
-// an LMS1xx does in CoLa-A (LMS100_PROTOCOL.md §3.1, checked against the real
-// LMS111 telegram in /work/shared/data/sick-real/lms111_cola_a_scan.txt).
+// an LMS1xx does in CoLa-A (docs/lms100-protocol.md §5.1, checked against the real
+// LMS111 telegram in tests/data/sick-real/lms111_cola_a_scan.txt).
 
 #include <cstddef>
 #include <cstdint>
@@ -36,7 +36,7 @@ struct LmdTelegramHeader {
   uint32_t measurement_frequency_1e1khz = 360;  ///< beam rate [kHz x 10] (360 = 36 kHz)
 };
 
-/// Which optional parts follow the DIST1 channel (sWN LMDscandatacfg, §2.2).
+/// Which optional parts follow the DIST1 channel (sWN LMDscandatacfg, §4.2).
 struct LmdOutputOptions {
   int rssi_bits = 16;  ///< 16: RSSI1 in the 16-bit block; 8: in the 8-bit block; 0: none
   bool send_device_name = false;

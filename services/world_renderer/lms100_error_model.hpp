@@ -1,7 +1,7 @@
 #pragma once
 // What an LMS100 does to a perfect measurement: range noise and limits, the
 // widening beam (mixed pixels), and the received signal strength (RSSI).
-// Figures from /work/shared/LMS100_PROTOCOL.md §3.4 and §6; where SICK publishes
+// Figures from docs/lms100-protocol.md §5.5 and §8; where SICK publishes
 // nothing (the 16-bit RSSI scale) the model is a documented assumption.
 //
 // RSSI model, in 16-bit units (8-bit = 16-bit / 257):
@@ -27,7 +27,7 @@
 //    Exponent 1 = RSSI strictly proportional to coverage; then the paper's
 //    threshold (8-bit 180) loses reflectors beyond ~8 m (bright beams per reflector
 //    at 2/5/10/15 m: 5.7/2.0/0.6/0.0 with 1, 6.0/2.3/1.1/0.55 with 0.5). No LMS1xx
-//    reflector RSSI sample exists (§3.4): this is an assumption to check.
+//    reflector RSSI sample exists (§10): this is an assumption to check.
 
 #include <string>
 
