@@ -2,7 +2,7 @@
 // SICK CoLa framing bytes and limits, shared by the LMS100 driver (which parses them) and
 // the emulated LMS100 (which writes them). Only the constants are shared: the driver's
 // parser and the emulator's encoder are written independently, so the emulator stays the
-// driver's test oracle (LMS100_PROTOCOL.md §1.2).
+// driver's test oracle (docs/lms100-protocol.md §2.1-2.3).
 
 #include <cstddef>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #pragma once
 // CoLa-A requests the driver sends and the interpretation of their replies
-// (LMS100_PROTOCOL.md §2). Payloads only; frame_cola_a() adds STX/ETX.
+// (docs/lms100-protocol.md §4). Payloads only; frame_cola_a() adds STX/ETX.
 
 #include <cstdint>
 #include <string>

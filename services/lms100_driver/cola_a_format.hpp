@@ -1,5 +1,5 @@
 #pragma once
-// CoLa-A framing and number formatting for requests (LMS100_PROTOCOL.md §1.2).
+// CoLa-A framing and number formatting for requests (docs/lms100-protocol.md §2.1-2.3).
 
 #include "common/cola_a_framing.hpp"
 

@@ -2,7 +2,7 @@
 // Splits a CoLa-A byte stream (TCP) into telegram payloads.
 //
 // CoLa-A frames are STX (0x02) + ASCII + ETX (0x03) with no length and no
-// checksum, so STX/ETX are the only sync points (LMS100_PROTOCOL.md §1.2).
+// checksum, so STX/ETX are the only sync points (docs/lms100-protocol.md §2.1-2.3).
 // The splitter survives split reads, several telegrams per read, junk between
 // telegrams, a frame cut short by a new STX, and frames that never end.
 

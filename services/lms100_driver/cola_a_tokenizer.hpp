@@ -1,5 +1,5 @@
 #pragma once
-// Reads the space-separated tokens of one CoLa-A payload (LMS100_PROTOCOL.md §1.2):
+// Reads the space-separated tokens of one CoLa-A payload (docs/lms100-protocol.md §2.1-2.3):
 // upper-case hex numbers without leading zeros, two's-complement negatives,
 // IEEE-754 floats as 8 hex digits, and strings as "<hex length> <chars>" whose
 // characters may contain spaces. Every reader checks bounds and digits and

@@ -1,5 +1,5 @@
 #pragma once
-// CoLa-B (binary) framing and LMDscandata decoding (LMS100_PROTOCOL.md §1.3, §3.1).
+// CoLa-B (binary) framing and LMDscandata decoding (docs/lms100-protocol.md §3, §5.1).
 // Our driver speaks CoLa-A on 2111; this reads recorded CoLa-B sessions (e.g.
 // the sick_scan_xd LMS111 capture) into the same LmdScanData, so the two
 // dialects can be checked against each other.

@@ -1,6 +1,6 @@
 #pragma once
 // The LMDscandata telegram (sRA reply to a poll, sSN stream event) decoded
-// field by field, in the units the sensor sends (LMS100_PROTOCOL.md §3.1).
+// field by field, in the units the sensor sends (docs/lms100-protocol.md §5.1).
 // Conversion to SI and to the laser frame is scan_conversion.hpp's job.
 
 #include <cstdint>

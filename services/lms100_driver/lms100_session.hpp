@@ -2,7 +2,7 @@
 // One LMS100 over CoLa-A/TCP, kept alive forever: connect, configure, wait
 // until ready, stream scans to a callback; on any failure close the socket,
 // back off (0.5 s doubling to 5 s) and start over. Never exits on a sensor
-// fault, never busy-loops. (LMS100_PROTOCOL.md §2, §4.4.)
+// fault, never busy-loops. (docs/lms100-protocol.md §4, §7.)
 
 #include <atomic>
 #include <cstdint>

@@ -7,7 +7,7 @@
 
 namespace refloc {
 
-/// The LMS100's 0 deg points 90 deg to the right of straight ahead (LMS100_PROTOCOL.md §3.3).
+/// The LMS100's 0 deg points 90 deg to the right of straight ahead (docs/lms100-protocol.md §5.3).
 inline constexpr double kLms100AngleShiftDeg = -90.0;
 
 /// Fills ranges, rssi, angles and timing of out from DIST1 (and RSSI1 when present in

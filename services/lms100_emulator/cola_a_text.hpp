@@ -1,5 +1,5 @@
 #pragma once
-// The emulator's side of CoLa-A text (LMS100_PROTOCOL.md §1.2, §2.1): numbers
+// The emulator's side of CoLa-A text (docs/lms100-protocol.md §2.1-2.3, §4.1): numbers
 // written the way an LMS100 writes them (upper-case hex, no leading zeros,
 // two's-complement negatives, floats as 8 hex digits) and request arguments read
 // the way it accepts them (plain hex, or decimal with an explicit +/- sign).

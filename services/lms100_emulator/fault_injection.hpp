@@ -1,5 +1,5 @@
 #pragma once
-// Faults seen on real LMS1xx links (LMS100_PROTOCOL.md §4.3, §4.5), injected on
+// Faults seen on real LMS1xx links (docs/lms100-protocol.md §7), injected on
 // purpose so the driver's recovery can be tested. Settings and one-shot actions
 // are set from any thread; the emulator's server thread consumes them.
 

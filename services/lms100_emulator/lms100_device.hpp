@@ -1,7 +1,7 @@
 #pragma once
 // The command side of an emulated LMS100: login levels, scan and output
 // configuration, measurement state, and the exact CoLa-A reply to every request
-// a driver sends (LMS100_PROTOCOL.md §2.1, §2.2, §4.5). No sockets here: the
+// a driver sends (docs/lms100-protocol.md §4.1, §4.2, §7). No sockets here: the
 // server feeds request payloads in and sends the replies out.
 
 #include "lms100_emulator/scan_scheduler.hpp"

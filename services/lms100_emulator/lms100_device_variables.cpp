@@ -1,5 +1,5 @@
 // Lms100Device's variables: sRN reads (scan and output configuration, status, identity,
-// LMDscandatacfg) and sWN writes (LMPoutputRange, LMDscandatacfg), LMS100_PROTOCOL.md §2.2.
+// LMDscandatacfg) and sWN writes (LMPoutputRange, LMDscandatacfg), docs/lms100-protocol.md §4.2.
 #include "lms100_emulator/lms100_device.hpp"
 
 #include "lms100_emulator/cola_a_text.hpp"

@@ -2,7 +2,7 @@
 // When an emulated LMS100 is ready and when each of its scans is measured.
 //
 // The motor spin-up after LMCstartmeas (or after a change of frequency or
-// resolution) takes seconds on a real unit (LMS100_PROTOCOL.md §2.4): STlms goes
+// resolution) takes seconds on a real unit (docs/lms100-protocol.md §4.3-4.4): STlms goes
 // 3 (idle) -> 4 (rotated) -> 5 (in preparation) -> 7 (ready for measurement).
 // Once ready, scans follow one another every period on a fixed grid (no drift):
 // scan k starts at origin + k * period on the device clock. The scan counter

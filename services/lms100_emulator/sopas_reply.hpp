@@ -1,6 +1,6 @@
 #pragma once
 // The SOPAS reply vocabulary the emulated LMS100 answers with: the error codes of
-// LMS100_PROTOCOL.md §1.3 and the argument checks every request handler starts with.
+// docs/lms100-protocol.md §2.4 and the argument checks every request handler starts with.
 // Shared by the device's command handlers (lms100_device.cpp) and its variables
 // (lms100_device_variables.cpp).
 
@@ -14,7 +14,7 @@
 
 namespace refloc::sopas {
 
-// SOPAS error codes (LMS100_PROTOCOL.md §1.3 table).
+// SOPAS error codes (docs/lms100-protocol.md §2.4).
 constexpr uint32_t kErrAccessDenied = 0x1;
 constexpr uint32_t kErrUnknownMethod = 0x2;
 constexpr uint32_t kErrUnknownVariable = 0x3;
