@@ -1,19 +1,29 @@
 #include "common/json_config.hpp"
 
-#include <fmt/format.h>
+#include "common/json_config_nesting.hpp"
 
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
-#include <fstream>
-#include <functional>
-#include <sstream>
+#include <cstring>
+#include <utility>
+#include <vector>
 
 namespace refloc {
 namespace {
+using json_config_detail::escape_key;
+using json_config_detail::NestingLimitedDom;
+using json_config_detail::printable;
 
+// Containers are described by their size: dump() would recurse over the whole subtree.
 std::string describe(const nlohmann::json& value) {
-  std::string text = value.dump();
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  return fmt::format("{} {}", value.type_name(), text);
+  if (value.is_object()) return fmt::format("object with {} keys", value.size());
+  if (value.is_array()) return fmt::format("array of {} elements", value.size());
+  return fmt::format("{} {}", value.type_name(), printable(value.dump(), 60));
 }
 
 std::string range_text(double min, double max) {
@@ -25,30 +35,76 @@ std::string range_text(double min, double max) {
   return "";
 }
 
+const char* file_kind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+// Reads at most kMaxConfigFileBytes of a regular file. O_NONBLOCK: opening a FIFO must not
+// wait for a writer; fstat on the open descriptor, so the file checked is the file read.
+std::string read_bounded_file(const std::string& path) {
+  const std::string name = printable(path, 400);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) throw ConfigError(fmt::format("{}: cannot open the file: {}", name, std::strerror(errno)));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0)
+    throw ConfigError(fmt::format("{}: cannot open the file: {}", name, std::strerror(errno)));
+  if (!S_ISREG(st.st_mode))
+    throw ConfigError(
+        fmt::format("{}: is {}; config and map files must be regular files", name, file_kind(st.st_mode)));
+  const auto too_big = [&] {
+    return ConfigError(
+        fmt::format("{}: larger than {} bytes; config and map files are smaller", name, kMaxConfigFileBytes));
+  };
+  if (static_cast<unsigned long long>(st.st_size) > kMaxConfigFileBytes) throw too_big();
+  std::string text(kMaxConfigFileBytes + 1, '\0');
+  size_t used = 0;
+  while (used < text.size()) {  // the size may have changed since fstat (or be 0 in /proc)
+    const ssize_t n = ::read(fd, text.data() + used, text.size() - used);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw ConfigError(fmt::format("{}: cannot read the file: {}", name, std::strerror(errno)));
+    if (n == 0) break;
+    used += static_cast<size_t>(n);
+  }
+  if (used > kMaxConfigFileBytes) throw too_big();
+  text.resize(used);
+  return text;
+}
+
 }  // namespace
 
 JsonConfig JsonConfig::load_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(fmt::format("{}: cannot open the file", path));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
+  return parse_text(read_bounded_file(path), path);
+}
+
+JsonConfig JsonConfig::parse_text(const std::string& text, const std::string& source) {
+  const std::string name = printable(source, 400);
   nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(buffer.str());
-  } catch (const nlohmann::json::exception& e) {  // parse errors and number overflow
-    throw ConfigError(fmt::format("{}: not valid JSON: {}", path, e.what()));
+  NestingLimitedDom builder(document);
+  if (!nlohmann::json::sax_parse(text, &builder) || !builder.error().empty()) {
+    throw ConfigError(
+        fmt::format("{}: {}", name, builder.error().empty() ? "not valid JSON" : builder.error()));
   }
   if (!document.is_object()) {
-    throw ConfigError(fmt::format("{}: /: expected a JSON object, got {}", path, describe(document)));
+    throw ConfigError(fmt::format("{}: /: expected a JSON object, got {}", name, describe(document)));
   }
-  return JsonConfig(std::move(document), path);
+  return JsonConfig(std::move(document), source);
 }
 
 JsonConfig::JsonConfig(nlohmann::json document, std::string source)
     : document_(std::move(document)), source_(std::move(source)) {}
 
 void JsonConfig::fail(const std::string& pointer, const std::string& what) const {
-  throw ConfigError(fmt::format("{}: {}: {}", source_, pointer.empty() ? "/" : pointer, what));
+  throw ConfigError(
+      fmt::format("{}: {}: {}", printable(source_, 400), pointer.empty() ? "/" : printable(pointer), what));
 }
 
 const nlohmann::json* JsonConfig::find(const std::string& pointer) const {
@@ -64,6 +120,13 @@ const nlohmann::json* JsonConfig::find(const std::string& pointer) const {
 bool JsonConfig::has(const std::string& pointer) const { return find(pointer) != nullptr; }
 
 void JsonConfig::mark_used(const std::string& pointer) const { used_.insert(pointer); }
+
+bool JsonConfig::is_known_container(const std::string& pointer) const {
+  if (pointer.empty() || used_.count(pointer) || used_whole_.count(pointer)) return true;
+  const std::string prefix = pointer + "/";
+  const auto below = used_.lower_bound(prefix);
+  return below != used_.end() && below->compare(0, prefix.size(), prefix) == 0;
+}
 
 double JsonConfig::checked_number(const std::string& pointer, const nlohmann::json& value, double min,
                                   double max) const {
@@ -162,26 +225,27 @@ const nlohmann::json& JsonConfig::subtree(const std::string& pointer) const {
 }
 
 void JsonConfig::reject_unknown_keys() const {
-  std::function<void(const nlohmann::json&, const std::string&)> walk = [&](const nlohmann::json& node,
-                                                                            const std::string& pointer) {
-    if (used_whole_.count(pointer)) return;
-    if (node.is_object()) {
-      for (auto it = node.begin(); it != node.end(); ++it) {
-        std::string key = it.key();
-        // RFC 6901 escaping, so the message names the key as a valid pointer.
-        for (size_t pos = 0; (pos = key.find('~', pos)) != std::string::npos; pos += 2)
-          key.replace(pos, 1, "~0");
-        for (size_t pos = 0; (pos = key.find('/', pos)) != std::string::npos; pos += 2)
-          key.replace(pos, 1, "~1");
-        walk(it.value(), pointer + "/" + key);
+  // An explicit stack: a document built in memory (not by parse_text) may be of any depth.
+  std::vector<std::pair<const nlohmann::json*, std::string>> pending{{&document_, ""}};
+  while (!pending.empty()) {
+    auto [node, pointer] = std::move(pending.back());
+    pending.pop_back();
+    if (used_whole_.count(pointer)) continue;
+    if (node->is_object() || node->is_array()) {
+      if (node->empty() && !is_known_container(pointer))
+        fail(pointer, "unknown key (misspelt, or not used by this program)");
+      // Children pushed last-first, so the first unknown key in file order is the one named.
+      if (node->is_object()) {
+        for (auto it = node->rbegin(); it != node->rend(); ++it)
+          pending.emplace_back(&it.value(), pointer + "/" + escape_key(it.key()));
+      } else {
+        for (size_t i = node->size(); i-- > 0;)
+          pending.emplace_back(&(*node)[i], pointer + "/" + std::to_string(i));
       }
-    } else if (node.is_array()) {
-      for (size_t i = 0; i < node.size(); ++i) walk(node[i], pointer + "/" + std::to_string(i));
     } else if (!used_.count(pointer)) {
       fail(pointer, "unknown key (misspelt, or not used by this program)");
     }
-  };
-  walk(document_, "");
+  }
 }
 
 }  // namespace refloc

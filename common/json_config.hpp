@@ -18,10 +18,21 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The largest config or map file read [bytes]: a map of 100,000 reflectors written compactly
+/// is about 3 MB; anything larger is a mistake (or /dev/zero behind a symlink), not a map.
+inline constexpr size_t kMaxConfigFileBytes = 4u << 20;
+/// The deepest nesting of objects and arrays accepted; our files need 4 levels. Deeper files
+/// are refused while parsing, before any recursive code sees them.
+inline constexpr int kMaxConfigNestingDepth = 32;
+
 class JsonConfig {
  public:
-  /// Parse a file; throws ConfigError when it cannot be read or is not JSON.
+  /// Parse a file; throws ConfigError when it cannot be read or is not JSON. Only a regular
+  /// file of at most kMaxConfigFileBytes is read (a FIFO, a device or a directory is refused
+  /// without blocking), nested at most kMaxConfigNestingDepth deep.
   static JsonConfig load_file(const std::string& path);
+  /// The same checks on text already in memory; source names it in messages.
+  static JsonConfig parse_text(const std::string& text, const std::string& source);
   /// Wrap a document already in memory; source names it in messages.
   JsonConfig(nlohmann::json document, std::string source);
 
@@ -54,7 +65,9 @@ class JsonConfig {
   const nlohmann::json& subtree(const std::string& pointer) const;
 
   /// Throws for any key in the document that no reader call asked for, so a
-  /// misspelt key is an error rather than a silently ignored setting.
+  /// misspelt key is an error rather than a silently ignored setting; an unknown key whose
+  /// value is {} or [] is as unknown as one holding a number. Iterative: no recursion on
+  /// the document's depth.
   void reject_unknown_keys() const;
 
   /// Throws ConfigError "<source>: <pointer>: <what>".
@@ -63,6 +76,8 @@ class JsonConfig {
  private:
   const nlohmann::json* find(const std::string& pointer) const;
   void mark_used(const std::string& pointer) const;
+  /// Whether a reader asked for this pointer or for a key below it.
+  bool is_known_container(const std::string& pointer) const;
   double checked_number(const std::string& pointer, const nlohmann::json& value, double min,
                         double max) const;
   long long checked_integer(const std::string& pointer, const nlohmann::json& value, long long min,
