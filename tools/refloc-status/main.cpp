@@ -4,10 +4,12 @@
 
 #include "common/clock.hpp"
 #include "common/guarded_main.hpp"
+#include "common/lcm_url.hpp"
 #include "common/service_runtime.hpp"
 #include "heartbeat_table.hpp"
 #include "refresh_schedule.hpp"
 #include "status_report.hpp"
+#include "udp_drop_report.hpp"
 
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
@@ -62,6 +64,8 @@ struct Listener {
 int run(const std::string& lcm_url, const std::vector<std::string>& expected, bool once, double wait_s,
         double max_age_s, bool json) {
   const std::string url = resolve_lcm_url(lcm_url);
+  const LcmUrl bus = parse_lcm_url(url, "--lcm-url");
+  const int udp_port = bus.provider == "udpm" ? bus.port : 0;  // whose sockets' kernel drops to show
   auto lcm = std::make_unique<lcm::LCM>(url);
   if (!lcm->good())
     throw std::runtime_error("cannot open LCM at '" + url + "' (is there a multicast route?)");
@@ -74,7 +78,9 @@ int run(const std::string& lcm_url, const std::vector<std::string>& expected, bo
   while (g_stop == 0 && !schedule.done()) {
     if (schedule.due(monotonic_s())) {
       const auto rows = listener.table.rows(expected, monotonic_s());
-      std::printf("%s", format_status(rows, listener.decode_errors, json, !once && !json).c_str());
+      std::printf("%s", format_status_with_udp_drops(rows, listener.decode_errors, json, !once && !json,
+                                                     read_udp_drops(udp_port))
+                            .c_str());
       std::fflush(stdout);
     }
     if (schedule.done()) break;
