@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# Hostile bus (issue 11), in a private netns (tests/tools/run_in_netns.sh): the whole stack under
+# supervisord (deploy/refloc) drives tests/ops/data/restart_mission.json while ops_hostile_peer
+# sends, phase after phase in bursts of 4 at 8 a second, lying array and string lengths (-1,
+# 2^31-1, 50,000,000, one more than the bytes left; every subscribed type cut one byte short),
+# stamps +1 h / INT64_MAX / -1 h / 0, absurd twists (1e308 m/s, 1e6 rad/s) and NaN / inf /
+# 1e300 in every numeric field, each built from the latest real message of its channel.
+#   hostile_bus_mission.sh REPO_ROOT BUILD_DIR
+# Asserted, and every failure printed before the exit (the list is the point):
+#   mission    refloc-mission reaches every waypoint within tolerance (its own GROUND_TRUTH check),
+#              max true error < 20 mm as in restart_under_load.sh;
+#   alive      every program has the pid it started with and is RUNNING at the end;
+#   rss        peak RSS (VmHWM) of every service < 50 MB;
+#   log        ops_hostile_log_check on the LCM log: no non-finite number on any channel
+#              (the peer's own datagrams excluded by the hashes it records: it writes to the
+#              stack's input channels, so the channel cannot tell), no OK POSE/LASER_POSE
+#              > 0.1 m from GROUND_TRUTH, every hostile datagram counted in the receiving
+#              service's HEARTBEAT (decode_errors + rejection counters) per phase.
+# Not attacked: GROUND_TRUTH and NAV_STATUS (only refloc-mission reads them: it is the referee),
+# HEARTBEAT is attacked though no service subscribes to it (lcm-logger and refloc-status would).
+set -euo pipefail
+repo="$1"
+build="$2"
+tmp="$(mktemp -d /tmp/refloc_hostile_test.XXXXXX)"
+export REFLOC_BUILD="$build" REFLOC_RUN_DIR="$tmp/run" REFLOC_LOG_DIR="$tmp/logs"
+export REFLOC_CONFIG_DIR="$repo/deploy/config" REFLOC_LOG_SPLIT_MB=2000
+export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0"
+export REFLOC_ARGS_lms100_driver="--host 127.0.0.1"
+unset REFLOC_PROGRAMS
+refloc="$repo/deploy/refloc"
+mapfile -t programs < <("$refloc" list)
+mapfile -t services < <("$refloc" list --services)
+rss_limit_kb=$((50 * 1024))
+mission_pid="" peer_pid="" passed=false
+failures=()
+
+cleanup() {
+  [ -n "$peer_pid" ] && kill "$peer_pid" 2>/dev/null || true
+  [ -n "$mission_pid" ] && kill "$mission_pid" 2>/dev/null || true
+  if [ -f "$REFLOC_RUN_DIR/supervisord.pid" ]; then "$refloc" stop >/dev/null 2>&1 || true; fi
+  if [ "$passed" = true ]; then rm -rf "$tmp"; else echo "kept $tmp for inspection" >&2; fi
+}
+trap cleanup EXIT
+fatal() { echo "FAIL: $*" >&2; exit 1; }
+all_pids() {
+  "$refloc" status 2>/dev/null | awk '{pid = ""} $2 == "RUNNING" {pid = $4; sub(",", "", pid)} {print $1, pid}' || true
+}
+pid_in() { awk -v n="$1" '$1 == n {print $2}' <<<"$2"; }
+
+for b in "${services[@]}" refloc-mission ops_hostile_peer ops_hostile_log_check; do
+  [ -x "$build/bin/$b" ] || fatal "$build/bin/$b not built"
+done
+command -v supervisord >/dev/null && command -v lcm-logger >/dev/null || fatal "no supervisord/lcm-logger"
+
+"$refloc" start >/dev/null || fatal "deploy/refloc start"
+for _ in $(seq 300); do
+  missing=0
+  start_pids="$(all_pids)"
+  for p in "${programs[@]}"; do [ -n "$(pid_in "$p" "$start_pids")" ] || missing=1; done
+  [ $missing = 0 ] && break
+  sleep 0.1
+done
+[ $missing = 0 ] || fatal "not everything RUNNING: $("$refloc" status || true)"
+
+"$build/bin/refloc-mission" --mission "$repo/tests/ops/data/restart_mission.json" --json "$tmp/mission.json" \
+  --log-file "$tmp/logs/refloc.0" --plot "$tmp/path.svg" >"$tmp/mission.out" 2>&1 &
+mission_pid=$!
+for _ in $(seq 600); do
+  grep -q "^sent mission" "$tmp/mission.out" && break
+  kill -0 "$mission_pid" 2>/dev/null || { cat "$tmp/mission.out" >&2; fatal "refloc-mission ended before driving"; }
+  sleep 0.1
+done
+grep -q "^sent mission" "$tmp/mission.out" || fatal "the mission never started"
+sleep 1   # under way: the peer's bases are real messages of a driving robot
+
+"$build/bin/ops_hostile_peer" --record "$tmp/hostile.tsv" --rate 8 --burst 4 --phase-gap-s 2 \
+  >"$tmp/peer.out" 2>&1 &
+peer_pid=$!
+t_peer=$(date +%s)
+set +e
+wait "$peer_pid"
+peer_rc=$?
+peer_pid=""
+t_peer_end=$(date +%s)
+kill -0 "$mission_pid" 2>/dev/null && mission_running_after_peer=yes || mission_running_after_peer=no
+wait "$mission_pid"
+mission_rc=$?
+set -e
+mission_pid=""
+cat "$tmp/peer.out"
+echo "hostile peer ran $((t_peer_end - t_peer)) s; mission still driving when it finished: $mission_running_after_peer"
+[ "$peer_rc" = 0 ] || failures+=("peer: ops_hostile_peer exited $peer_rc")
+[ "$mission_running_after_peer" = yes ] || failures+=("peer: the mission ended before the peer's last phase")
+cat "$tmp/mission.out"
+
+# Every pid as at the start, and its peak RSS, before anything is stopped.
+end_pids="$(all_pids)"
+echo "== processes: pid at start -> at end, peak RSS (VmHWM)"
+for p in "${programs[@]}"; do
+  old="$(pid_in "$p" "$start_pids")" new="$(pid_in "$p" "$end_pids")"
+  hwm="-"
+  [ -n "$new" ] && hwm="$(awk '/^VmHWM:/ {print $2}' "/proc/$new/status" 2>/dev/null || echo "-")"
+  printf '%-20s %8s -> %-8s %8s kB\n' "$p" "$old" "${new:-dead}" "$hwm"
+  [ "$old" = "$new" ] || failures+=("alive: $p pid $old -> ${new:-not RUNNING} (died or restarted)")
+  [ "$p" = lcm-logger ] && continue
+  if [ "$hwm" != "-" ] && [ "$hwm" -ge "$rss_limit_kb" ]; then
+    failures+=("rss: $p peak RSS $hwm kB >= $rss_limit_kb kB")
+  fi
+done
+"$build/bin/refloc-status" --once 2>/dev/null || true
+"$refloc" stop >/dev/null 2>&1 || true   # lcm-logger flushes the log
+
+[ "$mission_rc" = 0 ] || failures+=("mission: refloc-mission exited $mission_rc (not every waypoint within tolerance)")
+if [ -f "$tmp/mission.json" ]; then
+  python3 - "$tmp/mission.json" <<'PY' || failures+=("mission: report (above)")
+import json, sys
+r = json.load(open(sys.argv[1]))
+print(f"mission: {r['waypoints_reached']}/{r['waypoints_total']} waypoints, max true error "
+      f"{r['max_waypoint_error_mm']:.1f} mm, {r['duration_s']:.1f} s, goal resends {r['goal_resends']}")
+assert r["waypoints_reached"] == r["waypoints_total"], r
+assert not r["aborted"], r["abort_reason"]
+assert r["max_waypoint_error_mm"] < 20.0, r["max_waypoint_error_mm"]
+PY
+else
+  failures+=("mission: no report $tmp/mission.json")
+fi
+
+echo "== log check"
+"$build/bin/ops_hostile_log_check" --log "$tmp/logs/refloc.0" --record "$tmp/hostile.tsv" --max-ok-error-m 0.1 ||
+  failures+=("log: ops_hostile_log_check (FAIL lines above)")
+
+echo "== what the services said (last 3 warnings or errors each, from $REFLOC_RUN_DIR/<name>.log)"
+for s in "${services[@]}"; do
+  f="$REFLOC_RUN_DIR/$s.log"
+  [ -f "$f" ] || continue
+  grep -aiE 'warn|error|critical|terminate|bad_alloc' "$f" | tail -n 3 | sed "s/^/  $s: /" || true
+done
+
+if [ ${#failures[@]} -gt 0 ]; then
+  printf 'FAIL %s\n' "${failures[@]}" >&2
+  exit 1
+fi
+passed=true
+echo "PASS"
