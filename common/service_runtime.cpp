@@ -1,6 +1,8 @@
 #include "common/service_runtime.hpp"
 
 #include "common/clock.hpp"
+#include "common/heartbeat_peers.hpp"
+#include "common/instance_lock.hpp"
 #include "common/lcm_url.hpp"
 
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -10,10 +12,12 @@
 
 #include <unistd.h>
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <stdexcept>
+#include <tuple>
 
 namespace refloc {
 namespace {
@@ -83,6 +87,8 @@ ServiceRuntime::ServiceRuntime(std::string service_name, const std::string& lcm_
   const LcmUrl lcm_url_used =
       resolve_lcm_url(lcm_url, std::getenv("LCM_DEFAULT_URL"));  // ConfigError: exit 2
   const std::string url = lcm_url_used.url;
+  // Before LCM: a second instance must not publish even once (InstanceConflictError: exit 2).
+  instance_lock_ = std::make_unique<InstanceLock>(name_, url);
   lcm_ = std::make_unique<lcm::LCM>(url);
   if (!lcm_->good()) {
     throw std::runtime_error("cannot open LCM at '" + url +
@@ -93,7 +99,8 @@ ServiceRuntime::ServiceRuntime(std::string service_name, const std::string& lcm_
     counter("lcm_recv_buf_clamped_to_bytes") = clamped_to_bytes;
   install_signal_handlers();
   add_periodic(1.0, [this] { publish_heartbeat(); });
-  spdlog::info("started, pid {}, LCM {}", getpid(), url);
+  watch_heartbeats_for_duplicates();
+  lcm_url_for_log_ = url;
 }
 
 ServiceRuntime::~ServiceRuntime() = default;
@@ -139,8 +146,10 @@ void ServiceRuntime::spin_once(int timeout_ms) {
   int64_t wait_us = static_cast<int64_t>(timeout_ms) * 1000;
   const int64_t now = monotonic_us();
   for (const auto& t : timers_) wait_us = std::min(wait_us, std::max<int64_t>(0, t.next_due_us - now));
+  errno = 0;
   const int rc = lcm_->handleTimeout(static_cast<int>((wait_us + 999) / 1000));
-  if (rc < 0) {
+  // A signal (SIGTERM at shutdown, SIGCHLD) interrupting the wait is not an LCM error.
+  if (rc < 0 && errno != EINTR) {
     ++counter("lcm_handle_errors");
   }
   run_due_timers();
@@ -159,6 +168,8 @@ int ServiceRuntime::run() {
   watchdog_period_us_ = watchdog_half_period_us();
   watchdog_next_due_us_ = monotonic_us();
   notify_systemd("READY=1");
+  // Only now: everything the main set up before run() (config, map, world, sensor) succeeded.
+  spdlog::info("started, pid {}, LCM {}", getpid(), lcm_url_for_log_);
   // Fed from the loop itself: a handler that blocks stops the feeding, and systemd restarts us.
   const int spin_ms = watchdog_period_us_ > 0
                           ? static_cast<int>(std::clamp<int64_t>(watchdog_period_us_ / 2000, 1, 100))
@@ -175,14 +186,43 @@ int ServiceRuntime::run() {
   return 0;
 }
 
+void ServiceRuntime::watch_heartbeats_for_duplicates() {
+  // Raw, not subscribe(): heartbeats are not the service's input (messages_in, p50/p99).
+  lcm_->subscribeFunction("HEARTBEAT", &ServiceRuntime::on_heartbeat_heard, this);
+}
+
+void ServiceRuntime::on_heartbeat_heard(const lcm::ReceiveBuffer* rbuf, const std::string&,
+                                        ServiceRuntime* self) {
+  const auto sender = peek_heartbeat_identity(static_cast<const uint8_t*>(rbuf->data), rbuf->data_size,
+                                              heartbeat_t::getHash(), heartbeat_t::STATE_STOPPING);
+  if (sender && self->own_name_.observe(*sender, static_cast<double>(monotonic_us()) * 1e-6))
+    ++self->counter("other_instance_heartbeats");
+}
+
+/// The state the heartbeat reports: ERROR while another process sends under our name.
+std::pair<int8_t, std::string> ServiceRuntime::reported_state(int64_t start_utime) {
+  const double now_s = static_cast<double>(monotonic_us()) * 1e-6;
+  own_name_.observe_own(start_utime, now_s);
+  const std::string duplicate = own_name_.conflict(now_s);
+  if (duplicate != reported_duplicate_) {
+    if (duplicate.empty())
+      spdlog::info("no other instance of {} heard any more", name_);
+    else
+      spdlog::error("{} of {} on this LCM bus (from HEARTBEAT): state ERROR", duplicate, name_);
+    reported_duplicate_ = duplicate;
+  }
+  if (duplicate.empty() || state_ == heartbeat_t::STATE_STOPPING) return {state_, state_detail_};
+  return {heartbeat_t::STATE_ERROR, duplicate + (state_detail_.empty() ? "" : "; " + state_detail_)};
+}
+
 void ServiceRuntime::publish_heartbeat() {
+  if (instance_lock_) instance_lock_->drain_refused_starters();
   heartbeat_t hb;
   hb.utime = now_utime();
   hb.service = name_;
   hb.pid = static_cast<int32_t>(getpid());
-  hb.state = state_;
-  hb.state_detail = state_detail_;
   hb.uptime_us = monotonic_us() - start_monotonic_us_;
+  std::tie(hb.state, hb.state_detail) = reported_state(hb.utime - hb.uptime_us);
   hb.messages_in = messages_in_;
   hb.messages_out = messages_out_;
   hb.decode_errors = decode_errors_;

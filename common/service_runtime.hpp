@@ -5,17 +5,23 @@
 // (Type=notify, WatchdogSec=) it reports READY, feeds the watchdog while the
 // loop iterates and the service says it is healthy, and reports STOPPING.
 
+#include "common/clock.hpp"
+#include "common/heartbeat_peers.hpp"
+#include "common/instance_lock.hpp"
 #include "common/latency_window.hpp"
+#include "common/lcm_bounded_decode.hpp"
 
 #include <spdlog/spdlog.h>
 #include <lcm/lcm-cpp.hpp>
 #include <refloc/heartbeat_t.hpp>
 
+#include <unistd.h>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace refloc {
@@ -80,6 +86,9 @@ class ServiceRuntime {
   };
   static void dispatch(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub);
   void run_due_timers();
+  void watch_heartbeats_for_duplicates();
+  static void on_heartbeat_heard(const lcm::ReceiveBuffer* rbuf, const std::string& channel, ServiceRuntime* self);
+  std::pair<int8_t, std::string> reported_state(int64_t start_utime);
   void feed_watchdog_if_due();
 
   struct Periodic {
@@ -89,6 +98,7 @@ class ServiceRuntime {
   };
 
   std::string name_;
+  std::unique_ptr<InstanceLock> instance_lock_;  ///< taken before lcm_, released after it
   std::unique_ptr<lcm::LCM> lcm_;
   std::vector<std::unique_ptr<RawSubscription>> subscriptions_;
   std::vector<Periodic> timers_;
@@ -104,6 +114,9 @@ class ServiceRuntime {
   bool watchdog_healthy_ = true;
   int64_t watchdog_period_us_ = 0;  ///< half of WatchdogSec; 0 when systemd asked for none
   int64_t watchdog_next_due_us_ = 0;
+  std::string lcm_url_for_log_;
+  OwnNameMonitor own_name_{name_, static_cast<int32_t>(getpid())};
+  std::string reported_duplicate_;  ///< the duplicate last logged ("" = none)
 };
 
 template <class Message>
@@ -111,12 +124,17 @@ void ServiceRuntime::subscribe(const std::string& channel, std::function<void(co
   auto sub = std::make_unique<RawSubscription>();
   sub->runtime = this;
   const std::string channel_name = channel;
-  sub->on_message = [this, channel_name, handler = std::move(handler)](const lcm::ReceiveBuffer* rbuf) {
+  sub->on_message = [this, channel_name, handler = std::move(handler),
+                     log_limiter = DecodeErrorLogLimiter()](const lcm::ReceiveBuffer* rbuf) mutable {
     Message message;
-    if (message.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) < 0) {
+    // Bounds-checked first: a lying array length must not reach lcm-gen's resize().
+    const LcmDecodeResult decoded = decode_lcm_bounded(rbuf->data, rbuf->data_size, message);
+    if (!decoded.ok) {
       ++decode_errors_;
-      spdlog::warn("{}: {} bytes that are not a {} (decode error {}), skipped", channel_name, rbuf->data_size,
-                   Message::getTypeName(), decode_errors_);
+      if (const int64_t covered = log_limiter.on_error(monotonic_us()))
+        spdlog::warn(
+            "{}: {} of {} bytes skipped: {} ({} refused since the last line, {} decode errors in all)",
+            channel_name, Message::getTypeName(), rbuf->data_size, decoded.reason, covered, decode_errors_);
       return;
     }
     ++messages_in_;
