@@ -1,8 +1,69 @@
 #include "pose_fusion/fusion_node.hpp"
 
+#include "common/input_sanity.hpp"
+#include "pose_fusion/fusion_input_checks.hpp"
+
 #include <fmt/format.h>
 
 namespace refloc {
+namespace {
+
+const char* odometry_stamp_counter(StampVerdict v) {
+  switch (v) {
+    case StampVerdict::kAhead:
+      return "rejected_odometry_stamp_ahead";
+    case StampVerdict::kBehind:
+      return "rejected_odometry_stamp_behind";
+    case StampVerdict::kNotIncreasing:
+      return "rejected_odometry_stamp_not_increasing";
+    case StampVerdict::kReanchored:
+      return "reanchored_odometry";
+    case StampVerdict::kAccepted:
+      break;
+  }
+  return nullptr;
+}
+
+const char* fix_stamp_counter(StampVerdict v) {
+  switch (v) {
+    case StampVerdict::kAhead:
+      return "rejected_laser_pose_stamp_ahead";
+    case StampVerdict::kBehind:
+      return "rejected_laser_pose_stamp_behind";
+    case StampVerdict::kNotIncreasing:
+      return "rejected_laser_pose_stamp_not_increasing";
+    case StampVerdict::kReanchored:
+      return "reanchored_laser_pose";
+    case StampVerdict::kAccepted:
+      break;
+  }
+  return nullptr;
+}
+
+const char* odometry_value_counter(InputProblem p) {
+  return p == InputProblem::kNonFinite ? "rejected_odometry_nonfinite" : "rejected_odometry_out_of_bounds";
+}
+
+const char* fix_value_counter(InputProblem p) {
+  switch (p) {
+    case InputProblem::kNonFinite:
+      return "rejected_laser_pose_nonfinite";
+    case InputProblem::kCovariance:
+      return "rejected_laser_pose_covariance";
+    default:
+      return "rejected_laser_pose_out_of_bounds";
+  }
+}
+
+/// Variances beyond this in the filter's own estimate mean it diverged [m^2, rad^2].
+constexpr double kMaxEstimateVariance = 1e12;
+
+bool output_sane(const FusionOutput& pose) {
+  const Pose2& p = pose.map_T_robot;
+  return all_finite({p.x, p.y, p.theta}) && is_usable_covariance(pose.covariance, kMaxEstimateVariance);
+}
+
+}  // namespace
 
 FusionHealth fusion_health(FusionStatus status) {
   if (status == FusionStatus::kOk) return {true, ""};
@@ -23,12 +84,15 @@ const char* fix_result_counter(FixResult result) {
       return "fixes_not_good_enough_to_start";
     case FixResult::kDeferred:
       return "fixes_deferred";
+    case FixResult::kAheadOfOdometry:
+      return "rejected_laser_pose_ahead_of_odometry";
   }
   return "fixes_unknown_result";
 }
 
 FusionNode::FusionNode(const FusionServiceConfig& config, const OdometryNoise& noise)
-    : noise_(noise),
+    : config_(config),
+      noise_(noise),
       fusion_(config.fusion),
       continuity_(config.continuity),
       silence_(config.odometry_timeout) {}
@@ -37,18 +101,57 @@ void FusionNode::event(const char* counter, NodeEvent::Level level, std::string 
   events_.push_back({counter, level, std::move(log)});
 }
 
+void FusionNode::reject(const char* counter, std::string log) {
+  last_rejection_ = counter;
+  last_rejection_mono_us_ = now_mono_us_;
+  event(counter, NodeEvent::Level::kWarn, std::move(log));
+}
+
+void FusionNode::published(FusionStatus status, int64_t now_mono_us) {
+  output_status_ = status;
+  last_output_mono_us_ = now_mono_us;
+}
+
 void FusionNode::count_fix_result(FixResult result) {
   if (result == FixResult::kRejectedGate) {
     event(fix_result_counter(result), NodeEvent::Level::kDebug,
           fmt::format("fix rejected, Mahalanobis^2 {:.1f}", fusion_.last_mahalanobis_squared()));
+  } else if (result == FixResult::kAheadOfOdometry) {
+    reject(fix_result_counter(result),
+           fmt::format("LASER_POSE more than {:.1f} s ahead of the latest ODOMETRY: refused",
+                       config_.fusion.history));
   } else {
     event(fix_result_counter(result));
   }
 }
 
+bool FusionNode::odometry_acceptable(const OdometrySample& sample, int64_t host_utime) {
+  const InputProblem problem = check_odometry_values(sample);
+  if (problem != InputProblem::kNone) {
+    reject(odometry_value_counter(problem), fmt::format("ODOMETRY at utime {} refused: {} pose or distance",
+                                                        sample.utime, to_string(problem)));
+    return false;
+  }
+  const StampVerdict verdict = odometry_stamps_.check(sample.utime, host_utime);
+  if (!stamp_accepted(verdict)) {
+    reject(odometry_stamp_counter(verdict),
+           fmt::format("ODOMETRY at utime {} refused: stamp {} ({} us from the stream's clock)", sample.utime,
+                       to_string(verdict), -odometry_stamps_.last_deviation_us()));
+    return false;
+  }
+  if (verdict == StampVerdict::kReanchored) {
+    event(odometry_stamp_counter(verdict), NodeEvent::Level::kWarn,
+          "ODOMETRY clock stepped: the stream's stamps are believed from here");
+  }
+  for (int64_t missing = odometry_gaps_.on_stamp(sample.utime); missing > 0; --missing)
+    event("gap_odometry_messages");
+  return true;
+}
+
 void FusionNode::apply_step(const OdometrySample& sample, const OdometryStep& step) {
   switch (step.kind) {
     case OdometryStepKind::kFirst:
+    case OdometryStepKind::kImplausible:
       break;
     case OdometryStepKind::kBackwards:
       // A restarted odometry service on another clock: take the next step from here.
@@ -69,24 +172,74 @@ void FusionNode::apply_step(const OdometrySample& sample, const OdometryStep& st
   }
 }
 
-const FusionOutput& FusionNode::on_odometry(const OdometrySample& sample, int64_t now_mono_us) {
+const FusionOutput* FusionNode::on_odometry(const OdometrySample& sample, int64_t now_mono_us,
+                                            int64_t host_utime) {
   events_.clear();
-  apply_step(sample, continuity_.next(sample));
+  now_mono_us_ = now_mono_us;
+  if (!odometry_acceptable(sample, host_utime)) return nullptr;
+  const OdometryStep step = continuity_.next(sample);
+  if (step.kind == OdometryStepKind::kImplausible) {
+    reject("rejected_odometry_jump",
+           fmt::format("ODOMETRY at utime {} refused: moved further in {:.3f} s than the robot can",
+                       sample.utime, step.gap));
+    return nullptr;
+  }
+  apply_step(sample, step);
   for (const FixResult r : fusion_.deferred_results()) count_fix_result(r);
   const FusionStatus status = fusion_.status(sample.utime);
+  const PoseEstimate& e = fusion_.estimate();
+  pose_ = {sample.utime, e.map_T_robot, e.covariance, status, reflectors_used_};
+  if (!output_sane(pose_)) {
+    // Cannot happen from checked inputs; should it anyway, start over rather than publish it.
+    fusion_ = PoseFusion(config_.fusion);
+    reject("filter_resets_nonfinite",
+           "the filter's estimate became non-finite: re-initialising from the next fix");
+    return nullptr;
+  }
   if (status != published_status_) {
     event(nullptr, NodeEvent::Level::kInfo,
           fmt::format("status {} -> {}", to_string(published_status_), to_string(status)));
     published_status_ = status;
   }
-  const PoseEstimate& e = fusion_.estimate();
-  pose_ = {sample.utime, e.map_T_robot, e.covariance, status, reflectors_used_};
   silence_.on_odometry(now_mono_us, pose_.utime);
-  return pose_;
+  published(status, now_mono_us);
+  return &pose_;
 }
 
-std::optional<FusionOutput> FusionNode::on_fix(const LaserFixInput& input, int64_t now_mono_us) {
+bool FusionNode::fix_acceptable(const LaserFixInput& input, int64_t host_utime) {
+  // Every LASER_POSE, with or without a pose, is one message of the solver's stream.
+  const StampVerdict verdict = fix_stamps_.check(input.utime, host_utime);
+  if (!stamp_accepted(verdict)) {
+    reject(fix_stamp_counter(verdict),
+           fmt::format("LASER_POSE at utime {} refused: stamp {} ({} us from the stream's clock)",
+                       input.utime, to_string(verdict), -fix_stamps_.last_deviation_us()));
+    return false;
+  }
+  if (verdict == StampVerdict::kReanchored) {
+    event(fix_stamp_counter(verdict), NodeEvent::Level::kWarn,
+          "LASER_POSE clock stepped: the stream's stamps are believed from here");
+  }
+  for (int64_t missing = fix_gaps_.on_stamp(input.utime); missing > 0; --missing)
+    event("gap_laser_pose_messages");
+  if (input.status == FixStatus::kNoPose) {
+    event("fixes_unusable");
+    return false;
+  }
+  const InputProblem problem = check_fix_values(input);
+  if (problem != InputProblem::kNone) {
+    reject(fix_value_counter(problem), fmt::format("LASER_POSE at utime {} refused: {} pose or covariance",
+                                                   input.utime, to_string(problem)));
+    return false;
+  }
+  return true;
+}
+
+std::optional<FusionOutput> FusionNode::on_fix(const LaserFixInput& input, int64_t now_mono_us,
+                                               int64_t host_utime) {
   events_.clear();
+  now_mono_us_ = now_mono_us;
+  now_mono_us_ = now_mono_us;
+  if (!fix_acceptable(input, host_utime)) return std::nullopt;
   const std::optional<PoseFix> fix = usable_fix(input);
   if (!fix) {
     event("fixes_unusable");
@@ -98,6 +251,7 @@ std::optional<FusionOutput> FusionNode::on_fix(const LaserFixInput& input, int64
     out = FusionOutput{input.utime, input.map_T_robot, input.covariance, FusionStatus::kDegraded,
                        input.reflectors_used};
     event("fixes_published_without_odometry");
+    published(FusionStatus::kDegraded, now_mono_us);
   }
   const FixResult result = fusion_.add_fix(*fix);
   count_fix_result(result);
@@ -110,6 +264,15 @@ std::optional<FusionOutput> FusionNode::on_fix(const LaserFixInput& input, int64
                       p.theta));
   }
   return out;
+}
+
+FusionHealth FusionNode::health(int64_t now_mono_us) const {
+  if (last_output_mono_us_ < 0 || now_mono_us - last_output_mono_us_ >= kSilentOutputUs) {
+    if (last_rejection_ == nullptr || now_mono_us - last_rejection_mono_us_ >= kSilentOutputUs)
+      return {false, "no POSE published for 1 s: no usable ODOMETRY"};
+    return {false, fmt::format("no POSE published for 1 s: input refused ({})", last_rejection_)};
+  }
+  return fusion_health(output_status_);
 }
 
 }  // namespace refloc

@@ -1,16 +1,26 @@
 #pragma once
 // The pose_fusion service without LCM: ODOMETRY and LASER_POSE in, in arrival
-// order; POSE out once per odometry message (and, while odometry is silent, once
-// per new usable fix, as DEGRADED), with the heartbeat counters to bump, the log
-// lines to write and the heartbeat state. main.cpp only converts messages.
+// order; POSE out once per accepted odometry message (and, while odometry is silent,
+// once per new usable fix, as DEGRADED), with the heartbeat counters to bump, the
+// log lines to write and the heartbeat state. main.cpp only converts messages.
+//
+// Every message is judged before the filter sees it: its stamp by a StampGuard per
+// stream (against the host clock through the stream's learned offset), then its
+// values (fusion_input_checks.hpp); odometry also by OdometryContinuity's jump check.
+// A refused message is skipped whole, counted as rejected_<input>_<reason> with a
+// warning, and publishes nothing. Missing messages of either periodic stream are
+// counted as gap_<input>_messages. Health is judged by what is published: no POSE
+// for kSilentOutputUs is DEGRADED whatever arrives.
 
 #include "common/node_event.hpp"
 #include "common/odometry_noise.hpp"
+#include "common/stamp_guard.hpp"
 #include "pose_fusion/fusion_config_file.hpp"
 #include "pose_fusion/laser_fix_input.hpp"
 #include "pose_fusion/odometry_continuity.hpp"
 #include "pose_fusion/odometry_silence.hpp"
 #include "pose_fusion/pose_fusion.hpp"
+#include "pose_fusion/stream_gap_counter.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -28,10 +38,10 @@ struct FusionOutput {
   int32_t reflectors_used = 0;  ///< of the latest accepted fix
 };
 
-/// The HEARTBEAT state after an odometry message: OK only while the filter is OK.
+/// The HEARTBEAT state: OK only while POSE is published and its status is OK.
 struct FusionHealth {
   bool ok = false;
-  std::string detail;  ///< the fusion status when not OK
+  std::string detail;  ///< the fusion status, or why nothing is published, when not OK
 };
 FusionHealth fusion_health(FusionStatus status);
 
@@ -40,31 +50,49 @@ const char* fix_result_counter(FixResult result);
 
 class FusionNode {
  public:
+  /// No POSE published this long: DEGRADED [us].
+  static constexpr int64_t kSilentOutputUs = 1'000'000;
+
   /// noise: the robot's odometry increment noise (robot.json).
   FusionNode(const FusionServiceConfig& config, const OdometryNoise& noise);
 
-  /// One ODOMETRY message arriving at now_mono_us [monotonic us]; the POSE to publish.
-  const FusionOutput& on_odometry(const OdometrySample& sample, int64_t now_mono_us);
-  /// One LASER_POSE message arriving at now_mono_us; a POSE to publish while odometry is silent.
-  std::optional<FusionOutput> on_fix(const LaserFixInput& input, int64_t now_mono_us);
+  /// One ODOMETRY message arriving at now_mono_us [monotonic us], host_utime the host's
+  /// wall clock [us]; the POSE to publish, or nullptr when the message was refused.
+  const FusionOutput* on_odometry(const OdometrySample& sample, int64_t now_mono_us, int64_t host_utime);
+  /// One LASER_POSE message; a POSE to publish while odometry is silent.
+  std::optional<FusionOutput> on_fix(const LaserFixInput& input, int64_t now_mono_us, int64_t host_utime);
 
   /// Counters and log lines of the last on_odometry / on_fix call.
   const std::vector<NodeEvent>& events() const { return events_; }
-  /// After the latest odometry message.
-  FusionHealth health() const { return fusion_health(published_status_); }
+  /// The heartbeat state at now_mono_us, from what was published.
+  FusionHealth health(int64_t now_mono_us) const;
   const PoseFusion& fusion() const { return fusion_; }
 
  private:
+  bool odometry_acceptable(const OdometrySample& sample, int64_t host_utime);
+  bool fix_acceptable(const LaserFixInput& input, int64_t host_utime);
   void apply_step(const OdometrySample& sample, const OdometryStep& step);
   void count_fix_result(FixResult result);
+  void reject(const char* counter, std::string log);
+  void published(FusionStatus status, int64_t now_mono_us);
   void event(const char* counter, NodeEvent::Level level = NodeEvent::Level::kDebug, std::string log = {});
 
+  FusionServiceConfig config_;
   OdometryNoise noise_;
   PoseFusion fusion_;
   OdometryContinuity continuity_;
   OdometrySilence silence_;
+  StampGuard odometry_stamps_;
+  StampGuard fix_stamps_;
+  StreamGapCounter odometry_gaps_;
+  StreamGapCounter fix_gaps_;
   int32_t reflectors_used_ = 0;
-  FusionStatus published_status_ = FusionStatus::kInitializing;
+  FusionStatus published_status_ = FusionStatus::kInitializing;  ///< of the filter, for the log
+  FusionStatus output_status_ = FusionStatus::kInitializing;     ///< of the latest POSE published
+  int64_t last_output_mono_us_ = -1;
+  int64_t now_mono_us_ = 0;  ///< of the call in progress
+  const char* last_rejection_ = nullptr;
+  int64_t last_rejection_mono_us_ = 0;
   FusionOutput pose_;
   std::vector<NodeEvent> events_;
 };

@@ -63,18 +63,22 @@ int run(const std::string& lcm_url, const std::string& robot_path, const std::st
   const FusionServiceConfig config = load_fusion_service_config(config_path);
   ServiceRuntime runtime("pose_fusion", lcm_url);
   FusionNode node(config, load_robot_config(robot_path).odometry_noise);
-  runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
-    const FusionOutput& pose = node.on_odometry(from_message(msg), monotonic_us());
-    report_events(runtime, node.events());
-    runtime.publish(config.output_channel, to_message(pose));
-    const FusionHealth health = node.health();
+  const auto set_state = [&] {
+    const FusionHealth health = node.health(monotonic_us());
     runtime.set_state(health.ok ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED, health.detail);
+  };
+  runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
+    const FusionOutput* pose = node.on_odometry(from_message(msg), monotonic_us(), now_utime());
+    report_events(runtime, node.events());
+    if (pose != nullptr) runtime.publish(config.output_channel, to_message(*pose));
+    set_state();
   });
   runtime.subscribe<pose2d_t>(config.fix_channel, [&](const pose2d_t& msg) {
-    const std::optional<FusionOutput> pose = node.on_fix(from_message(msg), monotonic_us());
+    const std::optional<FusionOutput> pose = node.on_fix(from_message(msg), monotonic_us(), now_utime());
     if (pose) runtime.publish(config.output_channel, to_message(*pose));
     report_events(runtime, node.events());
   });
+  runtime.add_periodic(0.5, set_state);  // health by output: also while nothing is accepted
   return runtime.run();
 }
 

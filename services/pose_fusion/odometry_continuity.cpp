@@ -1,5 +1,7 @@
 #include "pose_fusion/odometry_continuity.hpp"
 
+#include <cmath>
+
 namespace refloc {
 
 OdometryContinuity::OdometryContinuity(const OdometryContinuityConfig& config) : config_(config) {}
@@ -10,6 +12,12 @@ Eigen::Matrix3d OdometryContinuity::unobserved_motion_covariance(double gap) con
   return Eigen::Vector3d(sxy * sxy, sxy * sxy, st * st).asDiagonal();
 }
 
+bool OdometryContinuity::implausible(const OdometryStep& step) const {
+  const double reach_m = kJumpFactor * config_.max_speed * step.gap + kJumpSlack_m;
+  const double reach_rad = kJumpFactor * config_.max_yaw_rate * step.gap + kJumpSlack_m;
+  return !(std::hypot(step.delta.x, step.delta.y) <= reach_m && std::abs(step.delta.theta) <= reach_rad);
+}
+
 OdometryStep OdometryContinuity::next(const OdometrySample& sample) {
   OdometryStep step;
   if (!previous_) {
@@ -17,10 +25,11 @@ OdometryStep OdometryContinuity::next(const OdometrySample& sample) {
     return step;
   }
   const OdometrySample previous = *previous_;
-  previous_ = sample;
   step.gap = 1e-6 * static_cast<double>(sample.utime - previous.utime);
   step.restarted = sample.distance < previous.distance - config_.distance_slack;
   if (sample.utime <= previous.utime) {
+    previous_ = sample;
+    consecutive_implausible_ = 0;
     step.kind = OdometryStepKind::kBackwards;
     step.restarted = true;
     return step;
@@ -29,6 +38,16 @@ OdometryStep OdometryContinuity::next(const OdometrySample& sample) {
   // means nothing. Across a long gap in one frame it is whatever the odometry
   // managed to integrate (everything, or nothing when it restarted integration).
   if (!step.restarted) step.delta = previous.odom_T_robot.inverse() * sample.odom_T_robot;
+  if (!step.restarted && implausible(step)) {
+    if (++consecutive_implausible_ <= kResyncAfter) {
+      step.kind = OdometryStepKind::kImplausible;
+      return step;
+    }
+    step.restarted = true;  // the reference was the bad one: a new frame from here
+    step.delta = Pose2{};
+  }
+  previous_ = sample;
+  consecutive_implausible_ = 0;
   if (step.restarted || step.gap > config_.max_gap) {
     step.kind = OdometryStepKind::kSeam;
     step.unobserved_q = unobserved_motion_covariance(step.gap);

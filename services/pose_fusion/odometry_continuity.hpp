@@ -9,6 +9,12 @@
 // "unobserved motion" step (no displacement across a restart), its covariance
 // grown by what the robot could have done meanwhile, so the next laser fix
 // re-anchors the estimate.
+//
+// A step in one frame that moves further than the robot can (kJumpFactor times the
+// speed bounds, plus kJumpSlack) is a broken or forged message, not motion: it is
+// refused (kImplausible) and the previous message stays the reference. Should
+// kResyncAfter messages in a row be refused so (the reference itself was the bad one),
+// the next is taken as a new frame (a restart seam), so a stream is never refused forever.
 
 #include "common/odometry_sample.hpp"
 #include "common/se2.hpp"
@@ -30,10 +36,11 @@ struct OdometryContinuityConfig {
 };
 
 enum class OdometryStepKind {
-  kFirst,       ///< nothing to step from
-  kContinuous,  ///< delta is the odometry displacement
-  kSeam,        ///< restart (delta identity) or long gap: unobserved_q covers what was missed
-  kBackwards,   ///< not after the previous message: nothing to apply, frame restarted
+  kFirst,        ///< nothing to step from
+  kContinuous,   ///< delta is the odometry displacement
+  kSeam,         ///< restart (delta identity) or long gap: unobserved_q covers what was missed
+  kBackwards,    ///< not after the previous message: nothing to apply, frame restarted
+  kImplausible,  ///< moved further than the robot can: refused, nothing to apply
 };
 
 struct OdometryStep {
@@ -54,9 +61,16 @@ class OdometryContinuity {
   /// Covariance of motion unobserved for gap [s] under the configured bounds.
   Eigen::Matrix3d unobserved_motion_covariance(double gap) const;
 
+  static constexpr double kJumpFactor = 2.0;
+  static constexpr double kJumpSlack_m = 0.05;  ///< [m], and the same number in [rad]
+  static constexpr int kResyncAfter = 5;
+
  private:
+  bool implausible(const OdometryStep& step) const;
+
   OdometryContinuityConfig config_;
   std::optional<OdometrySample> previous_;
+  int consecutive_implausible_ = 0;
 };
 
 }  // namespace refloc

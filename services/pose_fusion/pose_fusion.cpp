@@ -47,6 +47,7 @@ FusionStatus PoseFusion::status(int64_t now_utime) const {
 
 bool PoseFusion::add_odometry(int64_t utime, const Pose2& delta, const Eigen::Matrix3d& q) {
   if (utime <= this->utime()) return false;
+  has_odometry_ = true;
   Step step;
   step.utime = utime;
   step.delta = delta;
@@ -142,7 +143,15 @@ void PoseFusion::initialise(const PoseFix& fix) {
 }
 
 FixResult PoseFusion::add_fix(const PoseFix& fix) {
-  if (!initialised_ || lost(std::max(utime(), fix.utime))) {
+  // The time checks come first: they hold for (re-)initialisation too.
+  if (has_odometry_) {
+    if (!(static_cast<double>(fix.utime - utime()) <= config_.history * 1e6))
+      return FixResult::kAheadOfOdometry;
+    if (fix.utime < base_utime_) return FixResult::kTooOld;
+  }
+  // Lost is judged at the odometry's time, never at the fix's: a fix cannot declare
+  // the filter lost by its own stamp.
+  if (!initialised_ || lost(utime())) {
     if (fix.quality != FixQuality::kGood) return FixResult::kWaitingForGood;
     initialise(fix);
     return FixResult::kInitialised;
@@ -156,7 +165,7 @@ FixResult PoseFusion::add_fix(const PoseFix& fix) {
   // A fix newer than the latest odometry by at most max_fix_lead is applied to the latest estimate.
   const long i = step_ending_at(std::min(fix.utime, utime()));
   last_mahalanobis_squared_ = mahalanobis_squared(posterior(i), fix.map_T_robot, fix.covariance);
-  if (last_mahalanobis_squared_ > config_.gate_chi2) {
+  if (!(last_mahalanobis_squared_ <= config_.gate_chi2)) {  // NaN fails the gate
     if (++consecutive_rejections_ >= config_.max_consecutive_rejections) lost_by_rejections_ = true;
     return FixResult::kRejectedGate;
   }

@@ -11,7 +11,11 @@
 // Status: INITIALIZING until the first good fix; OK while the last accepted fix
 // is at most degraded_after old; DEGRADED after that; LOST after lost_after, or
 // after max_consecutive_rejections gated-out fixes in a row. From LOST the
-// filter re-initialises from the next good fix, without the gate.
+// filter re-initialises from the next good fix, without the gate, but never from a
+// fix that fails the time checks: a fix newer than the latest odometry by more than
+// the history (ahead of anything odometry can confirm), or older than the history,
+// is refused whatever the state, so a fix stamped in the future can neither make
+// the filter look lost nor re-initialise it. Every comparison fails for NaN.
 
 #include "common/se2.hpp"
 #include "pose_fusion/pose_ekf.hpp"
@@ -52,11 +56,12 @@ struct PoseFix {
 
 enum class FixResult {
   kAccepted,
-  kInitialised,     ///< the filter was (re-)initialised from this fix
-  kRejectedGate,    ///< Mahalanobis distance above the gate
-  kTooOld,          ///< older than the history
-  kWaitingForGood,  ///< not initialised and the fix is not good enough to start from
-  kDeferred,        ///< ahead of odometry: applied when odometry reaches its time
+  kInitialised,      ///< the filter was (re-)initialised from this fix
+  kRejectedGate,     ///< Mahalanobis distance above the gate
+  kTooOld,           ///< older than the history
+  kWaitingForGood,   ///< not initialised and the fix is not good enough to start from
+  kDeferred,         ///< ahead of odometry: applied when odometry reaches its time
+  kAheadOfOdometry,  ///< newer than the latest odometry by more than the history: refused
 };
 
 class PoseFusion {
@@ -81,6 +86,8 @@ class PoseFusion {
   /// Time of estimate() [us].
   int64_t utime() const;
   bool initialised() const { return initialised_; }
+  /// True once any odometry step was added (the fix time checks need it).
+  bool has_odometry() const { return has_odometry_; }
   int consecutive_rejections() const { return consecutive_rejections_; }
   double last_mahalanobis_squared() const { return last_mahalanobis_squared_; }
   size_t deferred_fixes() const { return deferred_.size(); }
@@ -114,6 +121,7 @@ class PoseFusion {
 
   FusionConfig config_;
   bool initialised_ = false;
+  bool has_odometry_ = false;
   bool lost_by_rejections_ = false;
   PoseEstimate base_;
   int64_t base_utime_ = 0;
