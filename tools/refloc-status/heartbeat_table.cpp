@@ -100,7 +100,9 @@ std::vector<std::string> missing_services(const std::vector<ServiceStatus>& rows
 }
 
 int status_exit_code(const std::vector<ServiceStatus>& rows) {
-  return missing_services(rows).empty() ? 0 : 1;
+  const bool duplicate =
+      std::any_of(rows.begin(), rows.end(), [](const ServiceStatus& r) { return r.duplicate; });
+  return missing_services(rows).empty() && !duplicate ? 0 : 1;
 }
 
 }  // namespace refloc

@@ -40,7 +40,8 @@ struct ServiceStatus {
   double age_s = 0.0;        ///< since the last heartbeat was received [s]
   double rate_in_hz = -1.0;  ///< messages_in per second; < 0 until two heartbeats of one process
   double rate_out_hz = -1.0;
-  int pid_changes = 0;  ///< restarts observed (or two processes sharing a name)
+  int pid_changes = 0;     ///< restarts observed (or two processes sharing a name)
+  bool duplicate = false;  ///< one of two processes sending under this name (ServiceInstances)
 
   /// Expected and not alive: never heard, or heard too long ago.
   bool missing() const { return expected && (!seen || stale); }
@@ -81,7 +82,8 @@ class HeartbeatTable {
 /// Names of the expected services that are missing or stale.
 std::vector<std::string> missing_services(const std::vector<ServiceStatus>& rows);
 
-/// Process exit status of refloc-status: 1 when an expected service is missing or stale, else 0.
+/// Process exit status of refloc-status: 1 when an expected service is missing or stale, or a
+/// service runs twice, else 0.
 int status_exit_code(const std::vector<ServiceStatus>& rows);
 
 }  // namespace refloc

@@ -4,10 +4,12 @@
 
 #include "common/clock.hpp"
 #include "common/guarded_main.hpp"
+#include "common/lcm_bounded_decode.hpp"
 #include "common/lcm_url.hpp"
 #include "common/service_runtime.hpp"
 #include "heartbeat_table.hpp"
 #include "refresh_schedule.hpp"
+#include "service_instances.hpp"
 #include "status_report.hpp"
 #include "udp_drop_report.hpp"
 
@@ -50,14 +52,23 @@ HeartbeatSample to_sample(const heartbeat_t& m) {
 struct Listener {
   HeartbeatTable table;
   int64_t decode_errors = 0;
+  ServiceInstances instances;  ///< one row per process of a service that runs twice
+
+  std::vector<ServiceStatus> rows(const std::vector<std::string>& expected, double now_s) const {
+    auto rows = table.rows(expected, now_s);
+    instances.split_duplicates(rows, now_s);
+    return rows;
+  }
 
   static void on_heartbeat(const lcm::ReceiveBuffer* rbuf, const std::string&, Listener* self) {
     heartbeat_t m;
-    if (m.decode(rbuf->data, 0, static_cast<int>(rbuf->data_size)) < 0) {
+    if (!decode_lcm_bounded(rbuf->data, rbuf->data_size, m).ok) {
       ++self->decode_errors;
       return;
     }
-    self->table.update(to_sample(m), monotonic_s());
+    const HeartbeatSample sample = to_sample(m);
+    self->table.update(sample, monotonic_s());
+    self->instances.update(sample, monotonic_s());
   }
 };
 
@@ -69,7 +80,7 @@ int run(const std::string& lcm_url, const std::vector<std::string>& expected, bo
   auto lcm = std::make_unique<lcm::LCM>(url);
   if (!lcm->good())
     throw std::runtime_error("cannot open LCM at '" + url + "' (is there a multicast route?)");
-  Listener listener{HeartbeatTable(max_age_s), 0};
+  Listener listener{HeartbeatTable(max_age_s), 0, {}};
   lcm->subscribeFunction("HEARTBEAT", &Listener::on_heartbeat, &listener);
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -77,7 +88,7 @@ int run(const std::string& lcm_url, const std::vector<std::string>& expected, bo
   RefreshSchedule schedule(monotonic_s(), once, wait_s);
   while (g_stop == 0 && !schedule.done()) {
     if (schedule.due(monotonic_s())) {
-      const auto rows = listener.table.rows(expected, monotonic_s());
+      const auto rows = listener.rows(expected, monotonic_s());
       std::printf("%s", format_status_with_udp_drops(rows, listener.decode_errors, json, !once && !json,
                                                      read_udp_drops(udp_port))
                             .c_str());
@@ -87,7 +98,7 @@ int run(const std::string& lcm_url, const std::vector<std::string>& expected, bo
     const double wait_ms = std::min(schedule.seconds_until_due(monotonic_s()) * 1000.0, 100.0);
     lcm->handleTimeout(static_cast<int>(wait_ms) + 1);
   }
-  return status_exit_code(listener.table.rows(expected, monotonic_s()));
+  return status_exit_code(listener.rows(expected, monotonic_s()));
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace refloc {
 namespace {
 
@@ -50,6 +52,11 @@ std::string format_status_table(const std::vector<ServiceStatus>& rows) {
   } else {
     out += fmt::format("MISSING or stale: {}\n", fmt::join(missing, ", "));
   }
+  std::vector<std::string> twice;
+  for (const auto& s : rows) {
+    if (s.duplicate && (twice.empty() || twice.back() != s.service)) twice.push_back(s.service);
+  }
+  if (!twice.empty()) out += fmt::format("RUNNING MORE THAN ONCE: {}\n", fmt::join(twice, ", "));
   return out;
 }
 
@@ -80,13 +87,16 @@ nlohmann::json status_to_json(const std::vector<ServiceStatus>& rows) {
     j["processing_p50_us"] = s.last.processing_p50_us;
     j["processing_p99_us"] = s.last.processing_p99_us;
     j["pid_changes"] = s.pid_changes;
+    j["duplicate"] = s.duplicate;
     nlohmann::json counters = nlohmann::json::object();
     for (const auto& [name, value] : s.last.counters) counters[name] = value;
     j["counters"] = std::move(counters);
     services.push_back(std::move(j));
   }
   const auto missing = missing_services(rows);
-  return {{"ok", missing.empty()}, {"missing", missing}, {"services", std::move(services)}};
+  const bool duplicate =
+      std::any_of(rows.begin(), rows.end(), [](const ServiceStatus& s) { return s.duplicate; });
+  return {{"ok", missing.empty() && !duplicate}, {"missing", missing}, {"services", std::move(services)}};
 }
 
 std::string format_status(const std::vector<ServiceStatus>& rows, int64_t heartbeat_decode_errors, bool json,
