@@ -87,7 +87,8 @@ class ServiceRuntime {
   static void dispatch(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub);
   void run_due_timers();
   void watch_heartbeats_for_duplicates();
-  static void on_heartbeat_heard(const lcm::ReceiveBuffer* rbuf, const std::string& channel, ServiceRuntime* self);
+  static void on_heartbeat_heard(const lcm::ReceiveBuffer* rbuf, const std::string& channel,
+                                 ServiceRuntime* self);
   std::pair<int8_t, std::string> reported_state(int64_t start_utime);
   void feed_watchdog_if_due();
 
