@@ -1,5 +1,6 @@
 #include "log_analysis.hpp"
 
+#include "common/lcm_bounded_decode.hpp"
 #include "log_reader.hpp"
 
 #include <fmt/format.h>
@@ -17,7 +18,7 @@ void add_to_continuity(ScanContinuity& continuity, const LogEventView& e,
   continuity.add_event(e.log_utime);
   if (*e.channel == continuity.scan_channel()) {
     // Straight into the type (not JSON): a scan has hundreds of ranges.
-    if (scan.decode(e.data, 0, static_cast<int>(e.size)) >= 0)
+    if (decode_lcm_bounded(e.data, e.size, scan).ok)
       continuity.add_scan(scan.scan_counter, scan.utime, e.log_utime);
   } else if (const int stage = continuity.stage_of(*e.channel); stage >= 0) {
     if (const auto scan_utime = decoder.utime(e.data, e.size))

@@ -1,5 +1,7 @@
 #include "message_json.hpp"
 
+#include "common/lcm_bounded_decode.hpp"
+
 #include <fmt/format.h>
 #include <refloc/heartbeat_t.hpp>
 #include <refloc/laser_scan_t.hpp>
@@ -213,7 +215,7 @@ void MessageDecoder::add(bool utime_first) {
   t.utime_first = utime_first;
   t.decode = [](const uint8_t* data, size_t size, OrderedJson& out) {
     Message m;
-    if (m.decode(data, 0, static_cast<int>(size)) < 0) return false;
+    if (!decode_lcm_bounded(data, size, m).ok) return false;
     out = to_json(m);
     return true;
   };
