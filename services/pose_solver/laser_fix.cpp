@@ -1,5 +1,7 @@
 #include "pose_solver/laser_fix.hpp"
 
+#include "common/input_sanity.hpp"
+
 namespace refloc {
 namespace {
 
@@ -27,6 +29,16 @@ LaserFix make_laser_fix(int64_t utime, MatchVerdict verdict, const PoseSolution&
   fix.status = from_solution(solution.status);
   fix.has_pose = solution.status != SolveStatus::kLost;
   if (!fix.has_pose) return fix;
+  // What a solver made of finite input can still overflow or be singular: checked here,
+  // the last step before LASER_POSE, so nothing non-finite or an OK from it is published.
+  const Pose2& p = solution.map_T_robot;
+  if (!all_finite({p.x, p.y, p.theta, solution.rms_residual}) ||
+      !is_usable_covariance(solution.covariance, kMaxFixVariance)) {
+    fix.status = LaserFixStatus::kLost;
+    fix.has_pose = false;
+    fix.unusable_solution = true;
+    return fix;
+  }
   fix.map_T_robot = solution.map_T_robot;
   fix.covariance = solution.covariance;
   fix.reflectors_used = solution.reflectors_used;

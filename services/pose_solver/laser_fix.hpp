@@ -29,6 +29,9 @@ struct LaserFix {
   int reflectors_used = 0;
   double residual = 0.0;    ///< RMS range residual [m]; 0 without a pose
   int outlier_matches = 0;  ///< matches the solver dropped
+  /// The solver's pose or covariance was not finite or not a usable covariance (variance
+  /// above kMaxFixVariance, not symmetric PSD): no pose, status LOST, never published as is.
+  bool unusable_solution = false;
 
   /// Calls bump(name, increment) for each heartbeat counter this fix touches.
   template <class Bump>
@@ -37,11 +40,18 @@ struct LaserFix {
     if (status == LaserFixStatus::kLost) bump("lost_fixes", 1);
     if (status == LaserFixStatus::kAmbiguous) bump("ambiguous_fixes", 1);
     if (outlier_matches > 0) bump("outlier_matches", outlier_matches);
+    if (unusable_solution) bump("unusable_solutions", 1);
   }
   /// The heartbeat state after this fix: OK, else DEGRADED with this detail.
   bool ok() const { return status == LaserFixStatus::kOk; }
-  const char* degraded_detail() const { return has_pose ? "last fix DEGRADED" : "no fix from the last scan"; }
+  const char* degraded_detail() const {
+    if (unusable_solution) return "last solution not finite or covariance unusable";
+    return has_pose ? "last fix DEGRADED" : "no fix from the last scan";
+  }
 };
+
+/// The largest variance a published fix may carry [m^2, rad^2]: the no-pose covariance's.
+constexpr double kMaxFixVariance = 1e6;
 
 /// LASER_POSE for a scan at utime [us]: solution is read only when verdict is kOk;
 /// matches = the number of matches the solver was given.

@@ -6,8 +6,10 @@
 #include "pose_solver/solver_messages.hpp"
 #include "pose_solver/solver_node.hpp"
 
+#include "common/clock.hpp"
 #include "common/json_config.hpp"
 #include "common/lcm_conversions.hpp"
+#include "common/node_event_report.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
@@ -37,12 +39,15 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   pose2d_t out{};
   runtime.subscribe<reflector_matches_t>(config.input_channel, [&](const reflector_matches_t& msg) {
     matches_from_message(msg, detections, matches);
-    const LaserFix& fix =
-        node.on_matches(msg.utime, match_verdict_from_message(msg.status), detections, matches);
-    runtime.set_state(fix.ok() ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED,
-                      fix.ok() ? "" : fix.degraded_detail());
-    fix.for_each_counter([&](const char* name, int64_t by) { runtime.counter(name) += by; });
-    to_message(fix, out);
+    const SolverOutput& o =
+        node.on_message(msg.utime, msg.scan_counter, match_verdict_from_message(msg.status), detections,
+                        matches, now_utime());
+    report_events(runtime, o.events);
+    runtime.set_state(o.ok() ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED,
+                      o.ok() ? "" : o.degraded_detail());
+    if (!o.accepted) return;
+    o.for_each_counter([&](const char* name, int64_t by) { runtime.counter(name) += by; });
+    to_message(*o.fix, out);
     runtime.publish(config.output_channel, out);
   });
   return runtime.run();

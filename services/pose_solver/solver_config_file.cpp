@@ -19,4 +19,12 @@ SolverServiceConfig parse_solver_service_config(const JsonConfig& config) {
   return s;
 }
 
+SolverServiceConfig load_solver_service_config(const std::string& path) {
+  if (path.empty()) return {};
+  const JsonConfig file = JsonConfig::load_file(path);
+  SolverServiceConfig config = parse_solver_service_config(file);
+  file.reject_unknown_keys();
+  return config;
+}
+
 }  // namespace refloc

@@ -18,5 +18,7 @@ struct SolverServiceConfig {
 
 /// Read and validate (ConfigError naming the key on a bad value).
 SolverServiceConfig parse_solver_service_config(const JsonConfig& config);
+/// Load, read and reject unknown keys; the defaults when path is empty.
+SolverServiceConfig load_solver_service_config(const std::string& path);
 
 }  // namespace refloc

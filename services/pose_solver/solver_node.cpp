@@ -1,6 +1,51 @@
 #include "pose_solver/solver_node.hpp"
 
+#include "common/input_sanity.hpp"
+#include "common/reflector_detection_check.hpp"
+
+#include <fmt/format.h>
+
 namespace refloc {
+
+InputFault check_matches(const std::vector<ReflectorDetection>& detections,
+                         const std::vector<ReflectorMatch>& matches) {
+  if (InputFault f = check_reflector_detections(detections)) return f;
+  for (size_t i = 0; i < matches.size(); ++i) {
+    const ReflectorMatch& m = matches[i];
+    if (!all_finite({m.map_p_center.x(), m.map_p_center.y(), m.map_radius}))
+      return {"nonfinite", fmt::format("match #{}: map reflector with a non-finite field", i)};
+    if (!finite_abs_at_most(m.map_p_center.x(), MatchBounds::kMaxAbsCoordinate_m) ||
+        !finite_abs_at_most(m.map_p_center.y(), MatchBounds::kMaxAbsCoordinate_m) ||
+        !(m.map_radius > 0.0 && m.map_radius <= MatchBounds::kMaxRadius_m) || m.detection_index < 0 ||
+        m.detection_index >= static_cast<int>(detections.size()))
+      return {"out_of_bounds", fmt::format("match #{}: map reflector {} at ({}, {}) m, radius {} m", i,
+                                           m.map_id, m.map_p_center.x(), m.map_p_center.y(), m.map_radius)};
+  }
+  return {};
+}
+
+const SolverOutput& SolverNode::on_message(int64_t utime, int64_t scan_counter, MatchVerdict verdict,
+                                           const std::vector<ReflectorDetection>& detections,
+                                           const std::vector<ReflectorMatch>& matches, int64_t host_utime) {
+  output_.events.clear();
+  output_.accepted = false;
+  output_.missing_scans = 0;
+  output_.starved = false;
+  if (const InputFault fault = check_matches(detections, matches)) {
+    output_.events.push_back(match_checks_.rejected(fault.reason, fault.detail, host_utime));
+  } else if (match_checks_.stamp_accepted(utime, host_utime, output_.events)) {
+    match_checks_.accepted(host_utime);
+    output_.accepted = true;
+  }
+  if (!output_.accepted) {
+    output_.starved = match_checks_.starved(host_utime);
+    if (output_.starved) output_.starved_detail = match_checks_.starved_detail(host_utime);
+    return output_;
+  }
+  output_.missing_scans = match_checks_.missing_before(scan_counter, utime, output_.events);
+  output_.fix = &on_matches(utime, verdict, detections, matches);
+  return output_;
+}
 
 const LaserFix& SolverNode::on_matches(int64_t utime, MatchVerdict verdict,
                                        const std::vector<ReflectorDetection>& detections,

@@ -29,7 +29,8 @@ ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& c) {
 
   e.clustering.lambda =
       c.number("/clustering/lambda_deg", e.clustering.lambda / kDegToRad, 1.0, 89.0) * kDegToRad;
-  e.clustering.range_sigma = c.number("/clustering/range_sigma_m", e.clustering.range_sigma, 0.0, 0.5);
+  e.clustering.range_sigma = c.positive_number("/clustering/range_sigma_m", e.clustering.range_sigma, 0.5,
+                                               "0 would split every cluster: nothing detected");
   e.clustering.max_gap_beams =
       static_cast<int>(c.integer("/clustering/max_gap_beams", e.clustering.max_gap_beams, -1, 100));
 
@@ -52,11 +53,20 @@ ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& c) {
   r.max_rms_residual_sigmas =
       c.number("/default/roundness/max_rms_residual_sigmas", r.max_rms_residual_sigmas, 0.1, 100.0);
   r.flat_chi2_margin = c.number("/default/roundness/flat_chi2_margin", r.flat_chi2_margin, 0.0, 1000.0);
-  r.radius_tolerance = c.number("/default/roundness/radius_tolerance_m", r.radius_tolerance, 0.0, 1.0);
+  r.radius_tolerance = c.positive_number("/default/roundness/radius_tolerance_m", r.radius_tolerance, 1.0,
+                                         "0 would fail every radius check: nothing detected");
   r.radius_sigmas = c.number("/default/roundness/radius_sigmas", r.radius_sigmas, 0.0, 100.0);
   r.min_beams_for_radius_check = static_cast<int>(
       c.integer("/default/roundness/min_beams_for_radius_check", r.min_beams_for_radius_check, 4, 1000));
   return out;
+}
+
+ExtractorServiceConfig load_extractor_service_config(const std::string& path) {
+  if (path.empty()) return {};
+  const JsonConfig file = JsonConfig::load_file(path);
+  ExtractorServiceConfig config = parse_extractor_service_config(file);
+  file.reject_unknown_keys();
+  return config;
 }
 
 }  // namespace refloc

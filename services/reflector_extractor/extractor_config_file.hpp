@@ -23,5 +23,7 @@ struct ExtractorServiceConfig {
 
 /// Read the service config from a loaded document (the caller rejects unknown keys).
 ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& config);
+/// Load, read and reject unknown keys; the defaults when path is empty.
+ExtractorServiceConfig load_extractor_service_config(const std::string& path);
 
 }  // namespace refloc

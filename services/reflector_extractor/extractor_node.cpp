@@ -1,11 +1,8 @@
 #include "reflector_extractor/extractor_node.hpp"
 
-namespace refloc {
+#include "reflector_extractor/extractor_input_checks.hpp"
 
-ExtractorHealth extractor_health(int64_t messages_in, const std::string& input_channel) {
-  if (messages_in == 0) return {true, "waiting for " + input_channel};
-  return {false, ""};
-}
+namespace refloc {
 
 ExtractorNode::ExtractorNode(const ExtractorServiceConfig& config, const Pose2& robot_T_laser)
     : extractor_(config.extractor),
@@ -13,13 +10,43 @@ ExtractorNode::ExtractorNode(const ExtractorServiceConfig& config, const Pose2& 
   output_.detections.reserve(64);
 }
 
-const ExtractorOutput& ExtractorNode::on_scan(const LaserScan& scan) {
+const std::vector<NodeEvent>& ExtractorNode::on_odometry(const OdometrySample& sample, int64_t host_utime) {
+  odometry_events_.clear();
+  if (const InputFault fault = check_odometry_twist(sample)) {
+    odometry_events_.push_back(odometry_checks_.rejected(fault.reason, fault.detail, host_utime));
+  } else if (odometry_checks_.stamp_accepted(sample.utime, host_utime, odometry_events_)) {
+    odometry_checks_.accepted(host_utime);
+    compensator_.on_odometry(sample);
+  }
+  return odometry_events_;
+}
+
+const ExtractorOutput& ExtractorNode::on_scan(const LaserScan& scan, int64_t host_utime) {
+  output_.events.clear();
+  output_.accepted = false;
+  output_.missing_scans = 0;
+  if (const InputFault fault = check_scan(scan)) {
+    output_.events.push_back(scan_checks_.rejected(fault.reason, fault.detail, host_utime));
+    return output_;
+  }
+  if (!scan_checks_.stamp_accepted(scan.utime, host_utime, output_.events)) return output_;
+  scan_checks_.accepted(host_utime);
+  output_.accepted = true;
+  output_.missing_scans = scan_checks_.missing_before(scan.scan_counter, scan.utime, output_.events);
   output_.utime = scan.utime;
   output_.scan_counter = scan.scan_counter;
   output_.detections = extractor_.extract(scan);  // copy into reused storage
   output_.stats = extractor_.stats();
   output_.compensation = compensator_.apply(output_.detections, scan.utime);
   return output_;
+}
+
+ExtractorHealth ExtractorNode::health(int64_t messages_in, int64_t host_utime,
+                                      const std::string& input_channel) const {
+  if (messages_in == 0) return {ExtractorHealth::State::kStarting, "waiting for " + input_channel};
+  if (scan_checks_.starved(host_utime))
+    return {ExtractorHealth::State::kDegraded, scan_checks_.starved_detail(host_utime)};
+  return {ExtractorHealth::State::kOk, ""};
 }
 
 }  // namespace refloc

@@ -2,7 +2,11 @@
 // The reflector_extractor service without LCM: odometry and scans in, in time order;
 // per scan the detections (motion-compensated when odometry is fresh), the extraction
 // statistics and the heartbeat counters to bump. main.cpp and refloc-eval both run this.
+// Every message is judged first (extractor_input_checks, then its stamp and, for scans,
+// the scan counter: common/input_stream_checks.hpp); a rejected one changes nothing.
 
+#include "common/input_stream_checks.hpp"
+#include "common/node_event.hpp"
 #include "reflector_extractor/extractor.hpp"
 #include "reflector_extractor/extractor_config_file.hpp"
 #include "reflector_extractor/motion_compensator.hpp"
@@ -14,16 +18,23 @@
 namespace refloc {
 
 struct ExtractorOutput {
-  int64_t utime = 0;  ///< the scan's (first beam) [us]
+  /// false: the scan was rejected (events say why); there is nothing to publish.
+  bool accepted = false;
+  std::vector<NodeEvent> events;  ///< rejection, clock re-anchor, counter reset, gap
+  int64_t missing_scans = 0;      ///< scan counters missing before this scan
+  int64_t utime = 0;              ///< the scan's (first beam) [us]
   uint32_t scan_counter = 0;
   std::vector<ReflectorDetection> detections;  ///< in the laser frame at utime
   ExtractionStats stats;
   CompensationOutcome compensation = CompensationOutcome::kOff;
 
-  /// Calls bump(name, increment) for each heartbeat counter this scan touches (a counter
-  /// first appears when first touched, so the set touched matters, not only the sums).
+  /// Calls bump(name, increment) for each heartbeat counter an accepted scan touches (a
+  /// counter first appears when first touched, so the set touched matters, not only the
+  /// sums). A rejected scan's counters are in events.
   template <class Bump>
   void for_each_counter(Bump&& bump) const {
+    if (!accepted) return;
+    bump("gap_scan_messages", missing_scans);
     if (compensation == CompensationOutcome::kNoFreshOdometry) bump("scans_without_fresh_odometry", 1);
     bump("rejected_too_few_beams", stats.rejected_too_few_beams);
     bump("rejected_shape", stats.rejected_too_wide + stats.rejected_too_narrow + stats.rejected_not_round +
@@ -33,27 +44,43 @@ struct ExtractorOutput {
   }
 };
 
-/// The heartbeat state: STARTING until any message came in, then OK.
+/// The heartbeat state: STARTING until any message came in; DEGRADED while scans come but
+/// none was usable for over a second; else OK.
 struct ExtractorHealth {
-  bool starting = true;
+  enum class State { kStarting, kOk, kDegraded };
+  State state = State::kStarting;
   std::string detail;
 };
-ExtractorHealth extractor_health(int64_t messages_in, const std::string& input_channel);
 
 class ExtractorNode {
  public:
   /// robot_T_laser: the laser mount (only motion compensation uses it).
   ExtractorNode(const ExtractorServiceConfig& config, const Pose2& robot_T_laser);
 
-  void on_odometry(const OdometrySample& sample) { compensator_.on_odometry(sample); }
-  /// One scan; the reference stays valid until the next call.
-  const ExtractorOutput& on_scan(const LaserScan& scan);
+  /// One ODOMETRY sample at host wall-clock time host_utime [us]; the events of a rejected
+  /// one (an invalid twist is never used for compensation). Valid until the next call.
+  const std::vector<NodeEvent>& on_odometry(const OdometrySample& sample, int64_t host_utime);
+  /// One scan at host_utime [us]; the reference stays valid until the next call.
+  const ExtractorOutput& on_scan(const LaserScan& scan, int64_t host_utime);
+
+  /// Offline (logs, simulations): each message's own stamp is the host clock, so stamps
+  /// are judged only against the stream's history.
+  const std::vector<NodeEvent>& on_odometry(const OdometrySample& sample) {
+    return on_odometry(sample, sample.utime);
+  }
+  const ExtractorOutput& on_scan(const LaserScan& scan) { return on_scan(scan, scan.utime); }
+
+  /// The state at host_utime [us], for a heartbeat; input_channel names the scans' channel.
+  ExtractorHealth health(int64_t messages_in, int64_t host_utime, const std::string& input_channel) const;
 
   const ReflectorExtractor& extractor() const { return extractor_; }
 
  private:
   ReflectorExtractor extractor_;
   MotionCompensator compensator_;
+  InputStreamChecks scan_checks_{"scan"};
+  InputStreamChecks odometry_checks_{"odometry"};
+  std::vector<NodeEvent> odometry_events_;
   ExtractorOutput output_;
 };
 

@@ -1,8 +1,9 @@
 // reflector_extractor: LMS100_SCAN (laser_scan_t) -> REFLECTORS (reflector_detections_t),
 // one output per scan. What happens to a scan is ExtractorNode's; this file converts.
 
+#include "common/clock.hpp"
 #include "common/json_config.hpp"
-#include "common/lcm_conversions.hpp"
+#include "common/node_event_report.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
@@ -40,21 +41,22 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   LaserScan scan;
   reflector_detections_t out;
   runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
-    node.on_odometry(odometry_twist_from_message(msg));
+    report_events(runtime, node.on_odometry(odometry_twist_from_message(msg), now_utime()));
   });
   runtime.subscribe<laser_scan_t>(config.input_channel, [&](const laser_scan_t& msg) {
-    if (!from_lcm(msg, scan)) {
-      ++runtime.counter("inconsistent_scans");
-      return;
-    }
-    const ExtractorOutput& o = node.on_scan(scan);
+    scan_from_message(msg, scan);
+    const ExtractorOutput& o = node.on_scan(scan, now_utime());
+    report_events(runtime, o.events);
+    if (!o.accepted) return;
     o.for_each_counter([&](const char* name, int64_t by) { runtime.counter(name) += by; });
     to_message(o, out);
     runtime.publish(config.output_channel, out);
   });
   runtime.add_periodic(1.0, [&] {
-    const ExtractorHealth h = extractor_health(runtime.messages_in(), config.input_channel);
-    runtime.set_state(h.starting ? heartbeat_t::STATE_STARTING : heartbeat_t::STATE_OK, h.detail);
+    const ExtractorHealth h = node.health(runtime.messages_in(), now_utime(), config.input_channel);
+    constexpr int8_t kState[] = {heartbeat_t::STATE_STARTING, heartbeat_t::STATE_OK,
+                                 heartbeat_t::STATE_DEGRADED};  // in ExtractorHealth::State order
+    runtime.set_state(kState[static_cast<int>(h.state)], h.detail);
   });
   return runtime.run();
 }

@@ -6,7 +6,9 @@
 #include "reflector_matcher/matcher_messages.hpp"
 #include "reflector_matcher/matcher_node.hpp"
 
+#include "common/clock.hpp"
 #include "common/lcm_conversions.hpp"
+#include "common/node_event_report.hpp"
 #include "common/reflector_map.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_command_line.hpp"
@@ -38,15 +40,18 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   ServiceRuntime runtime("reflector_matcher", lcm_url);
   std::vector<ReflectorDetection> detections;
   reflector_matches_t out;
-  runtime.subscribe<pose2d_t>(config.prior_channel,
-                              [&](const pose2d_t& msg) { node.on_pose(fused_pose_from_message(msg)); });
+  runtime.subscribe<pose2d_t>(config.prior_channel, [&](const pose2d_t& msg) {
+    report_events(runtime, node.on_pose(fused_pose_from_message(msg), now_utime()));
+  });
   runtime.subscribe<reflector_detections_t>(config.input_channel, [&](const reflector_detections_t& msg) {
     detections_from_message(msg, detections);
-    const MatcherOutput& o = node.on_detections(msg.utime, detections);
-    log_startup(o.startup_event, config.prior.relocalize_on_start);
-    o.for_each_counter([&](const char* name, int64_t by) { runtime.counter(name) += by; });
+    const MatcherOutput& o = node.on_detections(msg.utime, msg.scan_counter, detections, now_utime());
+    report_events(runtime, o.events);
     runtime.set_state(o.ok() ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED,
                       o.ok() ? "" : o.degraded_detail());
+    if (!o.accepted) return;
+    log_startup(o.startup_event, config.prior.relocalize_on_start);
+    o.for_each_counter([&](const char* name, int64_t by) { runtime.counter(name) += by; });
     to_message(msg, o.result, out);
     runtime.publish(config.output_channel, out);
   });

@@ -44,7 +44,8 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
       kDeg;
   m.tracking.gate_chi2 = config.number("/tracking/gate_chi2", m.tracking.gate_chi2, 0.1, 1000.0);
   m.tracking.detection_min_sigma =
-      config.number("/tracking/detection_min_sigma_m", m.tracking.detection_min_sigma, 0.0, 1.0);
+      config.positive_number("/tracking/detection_min_sigma_m", m.tracking.detection_min_sigma, 1.0,
+                             "0 lets an exact detection divide the gate by zero");
   m.tracking.max_unexplained =
       static_cast<int>(config.integer("/tracking/max_unexplained", m.tracking.max_unexplained, 0, 1000));
   m.tracking.min_score = config.number("/tracking/min_score", m.tracking.min_score, -1000.0, 1000.0);
@@ -55,6 +56,10 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
       config.number("/relocalization/min_triangle_side_m", m.relocalization.min_triangle_side, 0.0, 50.0);
   m.relocalization.max_triangle_side =
       config.number("/relocalization/max_triangle_side_m", 2.0 * m.sensor.max_range, 0.1, 1000.0);
+  if (m.relocalization.max_triangle_side <= m.relocalization.min_triangle_side) {
+    config.fail("/relocalization/max_triangle_side_m",
+                "must be above /relocalization/min_triangle_side_m (else no triangle is indexed)");
+  }
   m.relocalization.max_index_triangles = static_cast<int>(config.integer(
       "/relocalization/max_index_triangles", m.relocalization.max_index_triangles, 1000, 100000000));
   m.relocalization.max_triple_detections = static_cast<int>(config.integer(

@@ -1,14 +1,57 @@
 #include "reflector_matcher/matcher_node.hpp"
 
+#include "common/reflector_detection_check.hpp"
+#include "reflector_matcher/fused_pose_check.hpp"
+
 #include <utility>
 
 namespace refloc {
+namespace {
+
+StampGuardLimits pose_stamp_limits() {
+  StampGuardLimits limits;
+  limits.require_increasing = false;
+  return limits;
+}
+
+}  // namespace
 
 MatcherNode::MatcherNode(ReflectorMap map, const MatcherServiceConfig& config, const Pose2& robot_T_laser)
-    : matcher_(std::move(map), config.matcher), selector_(config.prior, robot_T_laser) {}
+    : matcher_(std::move(map), config.matcher),
+      selector_(config.prior, robot_T_laser),
+      pose_checks_("pose", pose_stamp_limits()) {}
 
-const MatcherOutput& MatcherNode::on_detections(int64_t utime,
-                                                const std::vector<ReflectorDetection>& detections) {
+const std::vector<NodeEvent>& MatcherNode::on_pose(const FusedPose& pose, int64_t host_utime) {
+  pose_events_.clear();
+  if (const InputFault fault = check_fused_pose(pose)) {
+    pose_events_.push_back(pose_checks_.rejected(fault.reason, fault.detail, host_utime));
+  } else if (pose_checks_.stamp_accepted(pose.utime, host_utime, pose_events_)) {
+    pose_checks_.accepted(host_utime);
+    selector_.on_pose(pose);
+  }
+  return pose_events_;
+}
+
+const MatcherOutput& MatcherNode::on_detections(int64_t utime, int64_t scan_counter,
+                                                const std::vector<ReflectorDetection>& detections,
+                                                int64_t host_utime) {
+  output_.events.clear();
+  output_.accepted = false;
+  output_.missing_scans = -1;
+  output_.starved = false;
+  if (const InputFault fault = check_reflector_detections(detections)) {
+    output_.events.push_back(detection_checks_.rejected(fault.reason, fault.detail, host_utime));
+  } else if (detection_checks_.stamp_accepted(utime, host_utime, output_.events)) {
+    detection_checks_.accepted(host_utime);
+    output_.accepted = true;
+  }
+  if (!output_.accepted) {
+    output_.starved = detection_checks_.starved(host_utime);
+    if (output_.starved) output_.starved_detail = detection_checks_.starved_detail(host_utime);
+    return output_;
+  }
+  if (scan_counter != kNoScanCounter)
+    output_.missing_scans = detection_checks_.missing_before(scan_counter, utime, output_.events);
   output_.utime = utime;
   const PriorChoice choice = selector_.select(utime);
   output_.prior_source = choice.source;
