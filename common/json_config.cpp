@@ -158,6 +158,15 @@ double JsonConfig::number(const std::string& pointer, double default_value, doub
   return value ? checked_number(pointer, *value, min, max) : default_value;
 }
 
+double JsonConfig::positive_number(const std::string& pointer, double default_value, double max,
+                                   const std::string& zero_means) const {
+  const double v = number(pointer, default_value, -std::numeric_limits<double>::max(), max);
+  if (!(v > 0.0)) {
+    fail(pointer, fmt::format("expected a finite number in (0, {}], got {} ({})", max, v, zero_means));
+  }
+  return v;
+}
+
 double JsonConfig::required_number(const std::string& pointer, double min, double max) const {
   mark_used(pointer);
   const nlohmann::json* value = find(pointer);

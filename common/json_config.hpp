@@ -47,6 +47,10 @@ class JsonConfig {
   /// Required finite number in [min, max].
   double required_number(const std::string& pointer, double min = -std::numeric_limits<double>::max(),
                          double max = std::numeric_limits<double>::max()) const;
+  /// Optional finite number in (0, max]: for sigmas, tolerances, radii and rates where 0 would
+  /// silently disable what the key configures; zero_means says what 0 would do, for the message.
+  double positive_number(const std::string& pointer, double default_value, double max,
+                         const std::string& zero_means) const;
   long long integer(const std::string& pointer, long long default_value,
                     long long min = std::numeric_limits<long long>::min(),
                     long long max = std::numeric_limits<long long>::max()) const;

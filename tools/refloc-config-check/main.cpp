@@ -1,23 +1,49 @@
 // refloc-config-check: validate map and config files before deploying them.
 // Exit 0 when every file is valid, 2 with one message naming the file, the JSON
-// pointer and the expectation for the first error.
+// pointer and the expectation for the first error. Warnings (a colinear map) go to
+// stderr and do not fail the check unless --strict.
 
 #include "common/guarded_main.hpp"
 #include "common/json_config.hpp"
-#include "common/reflector_map.hpp"
+#include "config_check.hpp"
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+
+namespace {
+
+void report(const std::string& path, const refloc::FileCheck& check, bool strict) {
+  for (const auto& w : check.warnings) {
+    if (strict) throw refloc::ConfigError(w + " (--strict)");
+    std::fprintf(stderr, "refloc-config-check: warning: %s\n", w.c_str());
+  }
+  fmt::print("{}: {}\n", path, check.summary);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  CLI::App app{"Validate refloc map files; exit 2 naming file and key on the first error"};
+  CLI::App app{"Validate refloc map and config files; exit 2 naming file and key on the first error"};
   std::vector<std::string> map_files;
-  app.add_option("--map", map_files, "reflector map file (JSON); may be repeated")->required();
+  std::vector<std::string> config_files;
+  bool strict = false;
+  app.add_option("--map", map_files, "reflector map file (JSON); may be repeated");
+  app.add_option("--config", config_files,
+                 "service config file, SERVICE=FILE or named after its service (reflector_extractor.json); "
+                 "may be repeated");
+  app.add_flag("--strict", strict, "warnings (colinear map) fail with exit 2");
   CLI11_PARSE(app, argc, argv);
+  if (map_files.empty() && config_files.empty()) {
+    std::fprintf(stderr, "refloc-config-check: give at least one --map or --config\n%s", app.help().c_str());
+    return 1;
+  }
   return refloc::guarded_main("refloc-config-check", [&] {
-    for (const auto& path : map_files) {
-      const refloc::ReflectorMap map = refloc::load_reflector_map(path);
-      fmt::print("{}: ok, {} reflectors\n", path, map.reflectors.size());
+    for (const auto& path : map_files) report(path, refloc::check_map_file(path), strict);
+    for (const auto& argument : config_files) {
+      const auto [service, path] = refloc::split_config_argument(argument);
+      report(path, refloc::check_config_file(service, path), strict);
     }
     return 0;
   });
