@@ -23,9 +23,9 @@ cleanup() {
 trap cleanup EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 cd "$repo"
-matcher() {  # log file, extra args...
+matcher() {  # log file, extra args... (execs: run it with & or in ( ), so $! is the matcher's pid)
   local log="$1"; shift
-  "$build/bin/reflector_matcher" --lcm-url "$url" --config deploy/config/reflector_matcher.json \
+  exec "$build/bin/reflector_matcher" --lcm-url "$url" --config deploy/config/reflector_matcher.json \
     --robot deploy/config/robot.json "$@" >"$log" 2>&1
 }
 wait_started() {  # log file
@@ -43,7 +43,7 @@ wait_started "$tmp/first.log"
 
 rc=0
 start_s=$(date +%s%N)
-matcher "$tmp/second.log" || rc=$?
+(matcher "$tmp/second.log") || rc=$?
 elapsed_ms=$((($(date +%s%N) - start_s) / 1000000))
 [ "$rc" = 2 ] || fail "second reflector_matcher exited $rc, expected 2"
 # Info lines of what main did before the runtime (map loaded) may precede it; one error line.
