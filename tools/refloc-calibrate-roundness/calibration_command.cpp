@@ -1,6 +1,7 @@
 #include "calibration_command.hpp"
 
 #include "common/json_config.hpp"
+#include "common/lcm_bounded_decode.hpp"
 #include "reflector_extractor/synthetic_scan.hpp"
 #include "roundness_calibration.hpp"
 
@@ -29,7 +30,7 @@ std::vector<RoundnessSample> samples_from_log(const CalibrationOptions& o) {
   for (const lcm::LogEvent* event = log.readNextEvent(); event != nullptr; event = log.readNextEvent()) {
     if (event->channel != o.channel) continue;
     reflector_detections_t msg;
-    if (msg.decode(event->data, 0, event->datalen) < 0) {
+    if (!decode_lcm_bounded(event->data, static_cast<size_t>(event->datalen), msg).ok) {
       ++decode_errors;
       continue;
     }
