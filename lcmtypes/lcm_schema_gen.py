@@ -28,6 +28,9 @@ import os
 import re
 import sys
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from lcm_fingerprint import fingerprint  # noqa: E402
+
 PRIMITIVE_BYTES = {"int8_t": 1, "byte": 1, "boolean": 1, "int16_t": 2, "int32_t": 4, "int64_t": 8,
                    "float": 4, "double": 8}
 PRIMITIVE_KIND = {"int8_t": "kInt8", "byte": "kByte", "boolean": "kBoolean", "int16_t": "kInt16",
@@ -38,7 +41,6 @@ CPP_TYPE = {"int8_t": "int8_t", "byte": "uint8_t", "boolean": "int8_t", "int16_t
             "int32_t": "int32_t", "int64_t": "int64_t", "float": "float", "double": "double"}
 MEMBER = re.compile(r"^([A-Za-z_][\w.]*)\s+([A-Za-z_]\w*)((?:\s*\[\s*\w+\s*\])*)\s*;$")
 MAX_COMMENT = re.compile(r"^\s*max\s+(\d+)(?:\s*x\s*(\d+))?\b")
-MASK64 = (1 << 64) - 1
 
 
 class SchemaError(Exception):
@@ -128,52 +130,6 @@ def check(structs):
     for s in structs:
         visit(s.name)
     return by_name
-
-
-def signed64(v):
-    v &= MASK64
-    return v - (1 << 64) if v >> 63 else v
-
-
-def signed_char(c):
-    c &= 0xFF
-    return c - 256 if c > 127 else c
-
-
-def hash_update(v, c):
-    # lcmgen.c: v = ((v << 8) ^ (v >> 55)) + c, on int64_t with a (signed) char c
-    return signed64(((v << 8) ^ (v >> 55)) + signed_char(c))
-
-
-def hash_string(v, s):
-    v = hash_update(v, len(s))
-    for ch in s.encode():
-        v = hash_update(v, ch)
-    return v
-
-
-def base_hash(s):
-    v = 0x12345678
-    for m in s.members:
-        v = hash_string(v, m.name)
-        if m.primitive:
-            v = hash_string(v, m.type_name)
-        v = hash_update(v, len(m.dims))
-        for d in m.dims:
-            v = hash_update(v, 0 if d.isdigit() else 1)  # LCM_CONST = 0, LCM_VAR = 1
-            v = hash_string(v, d)
-    return v & MASK64
-
-
-def fingerprint(name, by_name, parents=()):
-    if name in parents:
-        return 0
-    h = base_hash(by_name[name])
-    for m in by_name[name].members:
-        if not m.primitive:
-            h += fingerprint(m.type_name, by_name, parents + (name,))
-    h &= MASK64
-    return ((h << 1) + ((h >> 63) & 1)) & MASK64
 
 
 def min_bytes(name, by_name):
