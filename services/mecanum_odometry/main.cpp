@@ -37,7 +37,7 @@ int run(const std::string& lcm_url, const std::string& robot_path, const std::st
   OdometryNode node(robot, config);
   runtime.subscribe<wheel_encoders_t>(config.input_channel, [&](const wheel_encoders_t& msg) {
     const EncoderReading reading{msg.utime, {msg.ticks[0], msg.ticks[1], msg.ticks[2], msg.ticks[3]}};
-    const OdometryEstimate* estimate = node.on_encoders(reading, monotonic_us());
+    const OdometryEstimate* estimate = node.on_encoders(reading, monotonic_us(), now_utime());
     report_events(runtime, node.events());
     if (estimate != nullptr) runtime.publish(config.output_channel, to_message(*estimate));
   });

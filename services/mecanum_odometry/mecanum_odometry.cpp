@@ -32,11 +32,11 @@ EncoderSampleResult MecanumOdometry::add_sample(int64_t utime, const std::array<
   previous_utime_ = utime;
   previous_ticks_ = ticks;
   estimate_.utime = utime;
-  if (dt > config_.max_gap) {
+  if (!(dt <= config_.max_gap)) {
     estimate_.twist = {};
     return EncoderSampleResult::kGapRestart;
   }
-  if (max_speed > config_.max_plausible_wheel_speed) {
+  if (!(max_speed <= config_.max_plausible_wheel_speed)) {
     estimate_.twist = {};
     return EncoderSampleResult::kImplausible;
   }
@@ -52,6 +52,16 @@ EncoderSampleResult MecanumOdometry::add_sample(int64_t utime, const std::array<
   estimate_.slip_indicator = std::abs(kinematics_.redundancy_residual(angle)) / dt;
   estimate_.last_increment = delta;
   return EncoderSampleResult::kIntegrated;
+}
+
+void MecanumOdometry::restart_from(int64_t utime, const std::array<int32_t, 4>& ticks) {
+  has_previous_ = true;
+  previous_utime_ = utime;
+  previous_ticks_ = ticks;
+  estimate_.utime = utime;
+  estimate_.twist = {};
+  estimate_.slip_indicator = 0.0;
+  estimate_.last_increment = {};
 }
 
 }  // namespace refloc

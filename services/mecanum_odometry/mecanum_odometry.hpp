@@ -43,6 +43,9 @@ class MecanumOdometry {
 
   /// Integrate one sample of the four cumulative counts (int32, wrapping).
   EncoderSampleResult add_sample(int64_t utime, const std::array<int32_t, 4>& ticks);
+  /// Take this sample as the new reference without integrating (the encoder clock
+  /// stepped): pose, covariance and distance kept, twist zero.
+  void restart_from(int64_t utime, const std::array<int32_t, 4>& ticks);
 
   const OdometryEstimate& estimate() const { return estimate_; }
   const MecanumKinematics& kinematics() const { return kinematics_; }
