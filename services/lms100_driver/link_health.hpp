@@ -25,6 +25,12 @@ struct LinkVerdict {
 /// A streaming session is OK only while its last scan is younger than this [s].
 inline constexpr double kStreamingFreshS = 1.0;
 
+/// After a refused (implausible) scan the link stays DEGRADED this long [s], so a sensor that
+/// sends every other scan wrong never looks OK.
+inline constexpr double kRejectionHoldS = 1.0;
+/// At most one log line about refused scans this often [s] (the first one at once).
+inline constexpr double kRejectionLogPeriodS = 5.0;
+
 /// The heartbeat verdict from the session state and how long no scan came (silent_s [s]).
 LinkVerdict judge_link(SessionState state, const std::string& detail, double silent_s, double error_after_s);
 
@@ -43,6 +49,10 @@ class LinkHealth {
   /// A scan was handed to the publisher at now_us [us monotonic], taking publish_us [us].
   void on_scan_published(int64_t now_us, int64_t publish_us, bool published);
 
+  /// A scan was refused at now_us [us monotonic] for detail. Returns the line to log, or ""
+  /// while the rate limit holds (the next line says how many were refused meanwhile).
+  std::string on_scan_rejected(int64_t now_us, const std::string& detail);
+
   LinkVerdict verdict(int64_t now_us) const;
   uint64_t publish_failures() const { return publish_failures_.load(); }
   /// The last publish duration [us], 0 when none since the previous call.
@@ -54,6 +64,10 @@ class LinkHealth {
   mutable std::mutex mutex_;
   SessionState state_ = SessionState::kConnecting;
   std::string detail_ = "starting";
+  int64_t last_rejection_us_ = 0;
+  std::string rejection_detail_;
+  int64_t last_rejection_log_us_ = 0;
+  uint64_t rejections_since_log_ = 0;
   std::atomic<int64_t> last_scan_us_{0};
   std::atomic<int64_t> last_publish_us_{0};
   std::atomic<uint64_t> publish_failures_{0};

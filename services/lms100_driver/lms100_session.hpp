@@ -16,6 +16,7 @@
 #include "lms100_driver/cola_a_commands.hpp"
 #include "lms100_driver/cola_a_splitter.hpp"
 #include "lms100_driver/lmd_scandata.hpp"
+#include "lms100_driver/scan_plausibility.hpp"
 #include "lms100_driver/sensor_clock_filter.hpp"
 #include "lms100_driver/tcp_connection.hpp"
 
@@ -62,6 +63,15 @@ struct Lms100SessionCounters {
   std::atomic<uint64_t> scans{0};
   std::atomic<uint64_t> scan_counter_gaps{0};  ///< times the scan counter skipped
   std::atomic<uint64_t> lost_scans{0};         ///< scans missing in those gaps
+  /// Scans refused by check_scan_plausibility, in all and per reason (never published).
+  std::atomic<uint64_t> implausible_scans{0};
+  std::atomic<uint64_t> implausible_scale{0};
+  std::atomic<uint64_t> implausible_offset{0};
+  std::atomic<uint64_t> implausible_scan_frequency{0};
+  std::atomic<uint64_t> implausible_beam_count{0};
+  std::atomic<uint64_t> implausible_angles{0};
+  std::atomic<uint64_t> implausible_beam_timing{0};
+  std::atomic<uint64_t> reserved_distance_codes{0};  ///< beams with a code 2..15, published as no echo
 };
 
 enum class SessionState { kConnecting, kConfiguring, kWaitingReady, kStreaming, kBackoff, kStopped };
@@ -72,11 +82,16 @@ class Lms100Session {
   using ScanCallback = std::function<void(const LaserScan&)>;
   /// Called from the session's thread on every state change, with a human-readable detail.
   using StateCallback = std::function<void(SessionState, const std::string&)>;
+  /// Called from the session's thread for every scan refused as implausible.
+  using RejectCallback = std::function<void(const ScanPlausibility&)>;
 
   Lms100Session(Lms100SessionConfig config, ScanCallback on_scan, StateCallback on_state = {});
   ~Lms100Session();
   Lms100Session(const Lms100Session&) = delete;
   Lms100Session& operator=(const Lms100Session&) = delete;
+
+  /// Set before run()/start_thread(): who hears about refused scans.
+  void set_reject_callback(RejectCallback on_rejected) { on_rejected_ = std::move(on_rejected); }
 
   /// Runs until stop(); blocks the calling thread.
   void run();
@@ -113,16 +128,19 @@ class Lms100Session {
   /// the deadline, a stop, or a link failure.
   Wait pump(const std::string* request, int64_t deadline_us, bool return_on_scan, std::string& reply,
             std::string& why);
-  /// Parses one sSN/sRA LMDscandata and hands it to on_scan_; false on a parse error.
+  /// Parses one sSN/sRA LMDscandata and hands it to on_scan_ when plausible (else counts it
+  /// and tells on_rejected_); false on a parse error.
   bool handle_scan(const std::string& payload, int64_t receive_utime);
   void stop_streaming_politely();
   void set_state(SessionState state, const std::string& detail);
   bool sleep_interruptible(double seconds);
   void sync_splitter_counters();
+  void count_rejection(const ScanPlausibility& verdict);
 
   Lms100SessionConfig config_;
   ScanCallback on_scan_;
   StateCallback on_state_;
+  RejectCallback on_rejected_;
   Lms100SessionCounters counters_;
   std::atomic<SessionState> state_{SessionState::kConnecting};
   std::atomic<bool> stop_{false};

@@ -111,6 +111,8 @@ bool Lms100Session::handle_scan(const std::string& payload, int64_t receive_utim
     return false;
   }
   parse_error_streak_ = 0;
+  const ScanPlausibility plausible = check_scan_plausibility(scan_data_);
+  counters_.reserved_distance_codes += count_reserved_distance_codes(scan_data_);
   if (have_last_scan_counter_) {
     const uint32_t missing = (scan_data_.scan_counter - last_scan_counter_ - 1) & 0xFFFFu;
     if (missing != 0 && missing < 0x8000u) {
@@ -120,6 +122,10 @@ bool Lms100Session::handle_scan(const std::string& payload, int64_t receive_utim
   }
   have_last_scan_counter_ = true;
   last_scan_counter_ = scan_data_.scan_counter;
+  if (!plausible) {  // the link works (no parse error, no reconnect); the content is refused
+    count_rejection(plausible);
+    return true;
+  }
 
   const SensorTimeMapping t =
       clock_.update(scan_data_.time_since_startup_us, scan_data_.time_of_transmission_us, receive_utime);
@@ -130,6 +136,33 @@ bool Lms100Session::handle_scan(const std::string& payload, int64_t receive_utim
   ++counters_.scans;
   if (on_scan_) on_scan_(scan_);
   return true;
+}
+
+void Lms100Session::count_rejection(const ScanPlausibility& verdict) {
+  ++counters_.implausible_scans;
+  switch (verdict.reason) {
+    case ScanImplausibility::kNone:
+      return;
+    case ScanImplausibility::kScale:
+      ++counters_.implausible_scale;
+      break;
+    case ScanImplausibility::kOffset:
+      ++counters_.implausible_offset;
+      break;
+    case ScanImplausibility::kScanFrequency:
+      ++counters_.implausible_scan_frequency;
+      break;
+    case ScanImplausibility::kBeamCount:
+      ++counters_.implausible_beam_count;
+      break;
+    case ScanImplausibility::kAngles:
+      ++counters_.implausible_angles;
+      break;
+    case ScanImplausibility::kBeamTiming:
+      ++counters_.implausible_beam_timing;
+      break;
+  }
+  if (on_rejected_) on_rejected_(verdict);
 }
 
 void Lms100Session::stop_streaming_politely() {

@@ -1,5 +1,5 @@
 // lms100_driver: a SICK LMS100 over CoLa-A/TCP → LMS100_SCAN (laser_scan_t), with
-// reconnects forever and the link's counters in HEARTBEAT.
+// reconnects forever, implausible scans refused, and the link's counters in HEARTBEAT.
 //
 // The session blocks in poll() on its own thread and publishes each scan from
 // there (lcm::LCM::publish is thread-safe); the ServiceRuntime loop on the main
@@ -8,7 +8,6 @@
 #include <CLI/CLI.hpp>
 #include <refloc/heartbeat_t.hpp>
 #include <refloc/laser_scan_t.hpp>
-
 #include <string>
 
 #include "common/clock.hpp"
@@ -35,11 +34,8 @@ int8_t to_heartbeat_state(LinkLevel level) {
 }
 
 void log_state(SessionState state, const std::string& detail) {
-  if (state == SessionState::kBackoff) {
-    spdlog::warn("{}", detail);
-  } else {
-    spdlog::info("{}: {}", to_string(state), detail);
-  }
+  if (state == SessionState::kBackoff) return spdlog::warn("{}", detail);
+  spdlog::info("{}: {}", to_string(state), detail);
 }
 
 int run(const Options& options) {
@@ -50,13 +46,12 @@ int run(const Options& options) {
   lcm::LCM& lcm = runtime.lcm();
   LinkHealth health(config.error_after_s, monotonic_us());
 
-  const std::string channel = config.output_channel;
   Lms100Session session(
       config.session,
       [&](const LaserScan& scan) {
         const int64_t t0 = monotonic_us();
         laser_scan_t msg = to_lcm(scan);
-        const bool published = lcm.publish(channel, &msg) == 0;
+        const bool published = lcm.publish(config.output_channel, &msg) == 0;
         const int64_t t1 = monotonic_us();
         health.on_scan_published(t1, t1 - t0, published);
       },
@@ -64,6 +59,10 @@ int run(const Options& options) {
         health.on_state(state, detail);
         log_state(state, detail);
       });
+  session.set_reject_callback([&](const ScanPlausibility& refused) {
+    if (const auto line = health.on_scan_rejected(monotonic_us(), refused.detail); !line.empty())
+      spdlog::warn("{}", line);
+  });
 
   runtime.add_periodic(0.25, [&] {
     for (const auto& [name, value] : link_counters(session.counters(), health.publish_failures()))

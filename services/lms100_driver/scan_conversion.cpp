@@ -1,6 +1,7 @@
 #include "lms100_driver/scan_conversion.hpp"
 
 #include "common/angles.hpp"
+#include "lms100_driver/scan_plausibility.hpp"
 
 #include <cmath>
 #include <string>
@@ -8,7 +9,6 @@
 namespace refloc {
 
 namespace {
-constexpr uint16_t kNoEchoCode = 0;
 constexpr uint16_t kDazzledCode = 1;
 constexpr float kDazzledRange = 0.001F;  // laser_scan.hpp's marker for code 1
 }  // namespace
@@ -51,10 +51,12 @@ ParseResult to_laser_scan(const LmdScanData& data, LaserScan& out) {
   const double offset_m = dist->offset * 1e-3;
   for (size_t i = 0; i < n; ++i) {
     const uint16_t raw = dist->values[i];
-    if (raw == kNoEchoCode) {
-      out.ranges[i] = 0.0F;
-    } else if (raw == kDazzledCode) {
+    // One rule for every code below 16 ("distance values are only valid starting from 16d"):
+    // 1 is dazzled, 0 and the reserved 2..15 are no echo, never a 2..15 mm range.
+    if (raw == kDazzledCode) {
       out.ranges[i] = kDazzledRange;
+    } else if (raw < kFirstValidDistanceCode) {
+      out.ranges[i] = 0.0F;
     } else {
       out.ranges[i] = static_cast<float>(raw * scale_m + offset_m);
     }

@@ -5,6 +5,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -18,6 +19,16 @@ bool parse_count(const std::string& word, int max_value, int& value) {
     size_t used = 0;
     value = std::stoi(word, &used);
     return used == word.size() && value >= 0 && value <= max_value;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+bool parse_float(const std::string& word, float& value) {
+  try {
+    size_t used = 0;
+    value = std::stof(word, &used);
+    return used == word.size() && std::isfinite(value);
   } catch (const std::exception&) {
     return false;
   }
@@ -37,6 +48,11 @@ std::string describe(const FaultSettings& s) {
   out << "split " << split << ", merge " << s.merge_scan_telegrams << ", junk "
       << s.junk_bytes_between_telegrams << ", duplicate " << (s.duplicate_replies ? "on" : "off")
       << ", ready " << (s.refuse_readiness ? "off" : "on");
+  if (s.corrupts_scan_header()) {
+    out << ", header: scale " << s.dist_scale << ", offset " << s.dist_offset_mm << " mm, scan-frequency "
+        << s.scan_frequency_1e2hz << ", beam-rate " << s.measurement_frequency_1e1khz << ", codes "
+        << (s.reserved_distance_codes ? "on" : "off");
+  }
   return out.str();
 }
 
@@ -53,6 +69,7 @@ bool apply_fault_command(const std::string& line, FaultInjector& faults, std::st
 
   FaultSettings settings = faults.settings();
   int n = 0;
+  float value = 0.0F;
   bool flag = false;
   bool ok = true;
   if (command == "drop" && one_arg && parse_count(arg, 100000, n)) {
@@ -80,6 +97,29 @@ bool apply_fault_command(const std::string& line, FaultInjector& faults, std::st
   } else if (command == "duplicate" && one_arg && parse_on_off(arg, flag)) {
     settings.duplicate_replies = flag;
     faults.set_settings(settings);
+  } else if (command == "scale" && one_arg && parse_float(arg, value)) {
+    settings.dist_scale = value;
+    faults.set_settings(settings);
+  } else if (command == "offset" && one_arg && parse_float(arg, value)) {
+    settings.dist_offset_mm = value;
+    faults.set_settings(settings);
+  } else if (command == "scan-frequency" && one_arg && parse_count(arg, 1000000, n)) {
+    settings.scan_frequency_1e2hz = static_cast<uint32_t>(n);
+    faults.set_settings(settings);
+  } else if (command == "beam-rate" && one_arg && parse_count(arg, 1000000, n)) {
+    settings.measurement_frequency_1e1khz = static_cast<uint32_t>(n);
+    faults.set_settings(settings);
+  } else if (command == "codes" && one_arg && parse_on_off(arg, flag)) {
+    settings.reserved_distance_codes = flag;
+    faults.set_settings(settings);
+  } else if (command == "header" && one_arg && arg == "ok") {
+    const FaultSettings honest;
+    settings.dist_scale = honest.dist_scale;
+    settings.dist_offset_mm = honest.dist_offset_mm;
+    settings.scan_frequency_1e2hz = honest.scan_frequency_1e2hz;
+    settings.measurement_frequency_1e1khz = honest.measurement_frequency_1e1khz;
+    settings.reserved_distance_codes = honest.reserved_distance_codes;
+    faults.set_settings(settings);
   } else if (command == "status" && no_arg) {
   } else {
     ok = false;
@@ -88,7 +128,8 @@ bool apply_fault_command(const std::string& line, FaultInjector& faults, std::st
     message =
         "unknown or malformed command '" + line +
         "' (drop N | stall MS | close | reset | refuse-write | ready on|off | split none|random|boundaries"
-        " | merge N | junk N | duplicate on|off | status)";
+        " | merge N | junk N | duplicate on|off | scale F | offset MM | scan-frequency HZx100"
+        " | beam-rate HZ/100 | codes on|off | header ok | status)";
     return false;
   }
   message = "ok: " + describe(faults.settings());

@@ -1,6 +1,7 @@
 #include "lms100_emulator/fault_injection.hpp"
 
 #include "common/cola_a_framing.hpp"
+#include "lms100_emulator/cola_a_text.hpp"
 
 #include <algorithm>
 #include <utility>
@@ -31,6 +32,65 @@ void append_junk_bytes(size_t count, std::mt19937& rng, std::string& out) {
     int b = byte(rng);
     if (b == cola::kStx) b = cola::kEtx;  // a stray ETX is fine junk; a stray STX would open a frame
     out.push_back(static_cast<char>(b));
+  }
+}
+
+bool FaultSettings::corrupts_scan_header() const {
+  return dist_scale != 1.0F || dist_offset_mm != 0.0F || scan_frequency_1e2hz != 0 ||
+         measurement_frequency_1e1khz != 0 || reserved_distance_codes;
+}
+
+namespace {
+
+// Token indices of an LMDscandata payload without encoders (LMS100_PROTOCOL.md §3.3).
+constexpr size_t kScanFrequencyToken = 16;
+constexpr size_t kMeasurementFrequencyToken = 17;
+constexpr size_t kDistScaleToken = 21;
+constexpr size_t kDistOffsetToken = 22;
+constexpr size_t kFirstDistValueToken = 26;
+constexpr uint32_t kFirstReservedCode = 2;
+constexpr uint32_t kLastReservedCode = 15;
+
+std::string hex(uint32_t v) {
+  std::string s;
+  append_cola_hex(s, v);
+  return s;
+}
+
+std::string hex_float(float v) {
+  std::string s;
+  append_cola_hex_float(s, v);
+  return s;
+}
+
+}  // namespace
+
+void corrupt_scan_header(const FaultSettings& settings, std::string& payload) {
+  if (!settings.corrupts_scan_header()) return;
+  const size_t last_code_token = kFirstDistValueToken + (kLastReservedCode - kFirstReservedCode);
+  std::vector<std::pair<size_t, size_t>> tokens;  // begin, length of the first tokens
+  for (size_t pos = 0; pos < payload.size() && tokens.size() <= last_code_token;) {
+    const size_t end = std::min(payload.find(' ', pos), payload.size());
+    tokens.emplace_back(pos, end - pos);
+    pos = end + 1;
+  }
+  std::vector<std::pair<size_t, std::string>> replacements;
+  const auto replace = [&](size_t token, std::string text) {
+    if (token < tokens.size()) replacements.emplace_back(token, std::move(text));
+  };
+  if (settings.scan_frequency_1e2hz != 0) replace(kScanFrequencyToken, hex(settings.scan_frequency_1e2hz));
+  if (settings.measurement_frequency_1e1khz != 0)
+    replace(kMeasurementFrequencyToken, hex(settings.measurement_frequency_1e1khz));
+  if (settings.dist_scale != 1.0F) replace(kDistScaleToken, hex_float(settings.dist_scale));
+  if (settings.dist_offset_mm != 0.0F) replace(kDistOffsetToken, hex_float(settings.dist_offset_mm));
+  if (settings.reserved_distance_codes) {
+    for (uint32_t code = kFirstReservedCode; code <= kLastReservedCode; ++code)
+      replace(kFirstDistValueToken + code - kFirstReservedCode, hex(code));
+  }
+  // Back to front, so earlier token positions stay valid.
+  for (auto it = replacements.rbegin(); it != replacements.rend(); ++it) {
+    const auto [begin, length] = tokens[it->first];
+    payload.replace(begin, length, it->second);
   }
 }
 

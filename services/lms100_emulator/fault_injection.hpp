@@ -28,7 +28,21 @@ struct FaultSettings {
   int junk_bytes_between_telegrams = 0;  ///< junk (never STX) written before each frame
   bool duplicate_replies = false;        ///< every command reply is sent twice
   bool refuse_readiness = false;         ///< STlms stays below 7, no scans are made
+  // Implausible scan headers (issue 11): what a broken or foreign device might claim. The
+  // beams are still rendered as usual; only the telegram's fields lie.
+  float dist_scale = 1.0F;                    ///< DIST1 scale factor sent (an LMS1xx sends 1.0)
+  float dist_offset_mm = 0.0F;                ///< DIST1 offset sent [mm] (an LMS1xx sends 0)
+  uint32_t scan_frequency_1e2hz = 0;          ///< 0: the device's own; else claimed [Hz x 100]
+  uint32_t measurement_frequency_1e1khz = 0;  ///< 0: the device's own; else claimed beam rate [kHz x 10]
+  bool reserved_distance_codes = false;       ///< beams 0..13 carry the reserved codes 2..15
+
+  /// Whether any header field is falsified.
+  bool corrupts_scan_header() const;
 };
+
+/// Rewrites the header fields of an encoded LMDscandata payload (no STX/ETX, one DIST1
+/// channel, no encoder) as the settings falsify them; a no-op with the default settings.
+void corrupt_scan_header(const FaultSettings& settings, std::string& payload);
 
 /// Cut positions (strictly inside (0, size)) for one write of size bytes.
 void plan_write_cuts(size_t size, const FaultSettings& settings, std::mt19937& rng,

@@ -59,11 +59,11 @@ TEST(LinkHealth, CountersCarrySessionCountsAndPublishFailuresByName) {
   c.reconnects = 3;
   c.lost_scans = 7;
   const auto counters = link_counters(c, 2);
-  ASSERT_EQ(counters.size(), 14u);
+  ASSERT_EQ(counters.size(), 22u);
   EXPECT_STREQ(counters.front().first, "connects");
   std::map<std::string, int64_t> by_name;
   for (const auto& [name, value] : counters) by_name[name] = value;
-  EXPECT_EQ(by_name.size(), 14u);  // no name twice
+  EXPECT_EQ(by_name.size(), 22u);  // no name twice
   EXPECT_EQ(by_name.at("reconnects"), 3);
   EXPECT_EQ(by_name.at("lost_scans"), 7);
   EXPECT_EQ(by_name.at("publish_failures"), 2);
