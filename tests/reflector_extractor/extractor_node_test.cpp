@@ -69,11 +69,12 @@ TEST(ExtractorNode, AScanWithoutReflectorsBumpsItsCounterAndTheRejectionCounters
 }
 
 TEST(ExtractorHealth, StartingAndWaitingForTheScanChannelUntilAnyMessageThenOk) {
-  const ExtractorHealth waiting = extractor_health(0, "LMS100_SCAN");
-  EXPECT_TRUE(waiting.starting);
+  ExtractorNode node(ExtractorServiceConfig{}, Pose2{});
+  const ExtractorHealth waiting = node.health(0, 5'000'000, "LMS100_SCAN");
+  EXPECT_EQ(waiting.state, ExtractorHealth::State::kStarting);
   EXPECT_EQ(waiting.detail, "waiting for LMS100_SCAN");
-  const ExtractorHealth ok = extractor_health(1, "LMS100_SCAN");
-  EXPECT_FALSE(ok.starting);
+  const ExtractorHealth ok = node.health(1, 5'000'000, "LMS100_SCAN");
+  EXPECT_EQ(ok.state, ExtractorHealth::State::kOk);
   EXPECT_EQ(ok.detail, "");
 }
 
