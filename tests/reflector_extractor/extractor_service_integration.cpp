@@ -67,7 +67,7 @@ class ExtractorService : public ::testing::Test {
   std::optional<reflector_detections_t> exchange(const laser_scan_t& scan, const odometry_t& odometry) {
     // Until a first scan comes back the service may not be subscribed yet.
     laser_scan_t warmup = scan;
-    warmup.utime -= 1'000'000;
+    warmup.utime -= 20'000;  // one scan period: the service judges stamps by the stream's clock
     if (!exchange("LMS100_SCAN", warmup, warmup.utime)) return std::nullopt;
     lcm_.publish("ODOMETRY", &odometry);
     return exchange("LMS100_SCAN", scan, scan.utime);
