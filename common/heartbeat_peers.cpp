@@ -7,58 +7,11 @@
 namespace refloc {
 namespace {
 
-/// Big-endian reader that refuses to run past the end (LCM encodes big-endian).
-class ByteReader {
- public:
-  ByteReader(const uint8_t* data, size_t size) : data_(data), size_(size) {}
-
-  bool read_int(int bytes, int64_t& value) {
-    if (size_ - offset_ < static_cast<size_t>(bytes)) return false;
-    uint64_t v = 0;
-    for (int i = 0; i < bytes; ++i) v = (v << 8) | data_[offset_++];
-    // Sign-extend the narrower types.
-    if (bytes < 8 && (v >> (8 * bytes - 1)) != 0) v |= ~uint64_t{0} << (8 * bytes);
-    value = static_cast<int64_t>(v);
-    return true;
-  }
-
-  /// An LCM string: int32 length including the terminating NUL, then the bytes.
-  bool read_string(std::string* out) {
-    int64_t length = 0;
-    if (!read_int(4, length) || length < 1 || static_cast<uint64_t>(length) > size_ - offset_) return false;
-    if (out != nullptr)
-      out->assign(reinterpret_cast<const char*>(data_ + offset_), static_cast<size_t>(length - 1));
-    offset_ += static_cast<size_t>(length);
-    return true;
-  }
-
- private:
-  const uint8_t* data_;
-  size_t size_;
-  size_t offset_ = 0;
-};
-
 bool overlap(const HeardInstance& a, const HeardInstance& b) {
   return std::max(a.first_heard_s, b.first_heard_s) < std::min(a.last_heard_s, b.last_heard_s);
 }
 
 }  // namespace
-
-std::optional<HeartbeatIdentity> peek_heartbeat_identity(const uint8_t* data, size_t size,
-                                                         int64_t heartbeat_fingerprint,
-                                                         int8_t stopping_state) {
-  ByteReader reader(data, size);
-  int64_t fingerprint = 0, utime = 0, pid = 0, state = 0, uptime_us = 0;
-  HeartbeatIdentity id;
-  if (!reader.read_int(8, fingerprint) || fingerprint != heartbeat_fingerprint) return std::nullopt;
-  if (!reader.read_int(8, utime) || !reader.read_string(&id.service) || !reader.read_int(4, pid) ||
-      !reader.read_int(1, state) || !reader.read_string(nullptr) || !reader.read_int(8, uptime_us))
-    return std::nullopt;
-  id.pid = static_cast<int32_t>(pid);
-  id.start_utime = utime - uptime_us;
-  id.stopping = state == stopping_state;
-  return id;
-}
 
 DuplicateInstanceDetector::DuplicateInstanceDetector(double window_s) : window_s_(window_s) {}
 

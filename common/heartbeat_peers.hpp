@@ -2,12 +2,10 @@
 // Two processes publishing under one service name, told apart from HEARTBEAT alone.
 // A restart (old pid's last heartbeat, then a new pid) is not a duplicate; two
 // processes that keep sending side by side are. No LCM in here: the runtime and
-// refloc-status convert heartbeat_t at their edge (or peek at its bytes).
+// refloc-status convert heartbeat_t at their edge.
 
-#include <cstddef>
 #include <cstdint>
 #include <map>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,14 +19,6 @@ struct HeartbeatIdentity {
   int64_t start_utime = 0;  ///< sender's wall clock minus its uptime [us]
   bool stopping = false;    ///< the sender's last heartbeat (heartbeat_t::STATE_STOPPING)
 };
-
-/// Bounds-checked read of service, pid, state and start time from an encoded heartbeat_t
-/// (fingerprint, utime, service, pid, state, state_detail, uptime_us: the type's first
-/// fields in order); nullopt when the bytes are not one. Nothing is allocated from a length
-/// field before it is checked against size.
-std::optional<HeartbeatIdentity> peek_heartbeat_identity(const uint8_t* data, size_t size,
-                                                         int64_t heartbeat_fingerprint,
-                                                         int8_t stopping_state);
 
 /// One process heard under a service name.
 struct HeardInstance {

@@ -193,9 +193,14 @@ void ServiceRuntime::watch_heartbeats_for_duplicates() {
 
 void ServiceRuntime::on_heartbeat_heard(const lcm::ReceiveBuffer* rbuf, const std::string&,
                                         ServiceRuntime* self) {
-  const auto sender = peek_heartbeat_identity(static_cast<const uint8_t*>(rbuf->data), rbuf->data_size,
-                                              heartbeat_t::getHash(), heartbeat_t::STATE_STOPPING);
-  if (sender && self->own_name_.observe(*sender, static_cast<double>(monotonic_us()) * 1e-6))
+  heartbeat_t hb;
+  if (!decode_lcm_bounded(rbuf->data, rbuf->data_size, hb).ok) {
+    ++self->counter("unreadable_heartbeats");  // not our input: counted, never logged per message
+    return;
+  }
+  const HeartbeatIdentity sender{hb.service, hb.pid, hb.utime - hb.uptime_us,
+                                 hb.state == heartbeat_t::STATE_STOPPING};
+  if (self->own_name_.observe(sender, static_cast<double>(monotonic_us()) * 1e-6))
     ++self->counter("other_instance_heartbeats");
 }
 

@@ -111,53 +111,5 @@ TEST(OwnNameMonitor, AnotherPidUnderOurNameIsAConflictOurOwnEchoIsNot) {
   EXPECT_EQ(own.conflict(6.0), "");  // 200 not heard for 3 s
 }
 
-// heartbeat_t as LCM encodes it: fingerprint, utime, service, pid, state, state_detail, uptime_us, ...
-std::vector<uint8_t> encoded_heartbeat(int64_t fingerprint, const std::string& service, int32_t pid,
-                                       int8_t state, const std::string& detail, int64_t utime,
-                                       int64_t uptime_us) {
-  std::vector<uint8_t> b;
-  auto put = [&b](uint64_t v, int bytes) {
-    for (int i = bytes - 1; i >= 0; --i) b.push_back(static_cast<uint8_t>(v >> (8 * i)));
-  };
-  auto put_string = [&](const std::string& s) {
-    put(s.size() + 1, 4);
-    b.insert(b.end(), s.begin(), s.end());
-    b.push_back(0);
-  };
-  put(static_cast<uint64_t>(fingerprint), 8);
-  put(static_cast<uint64_t>(utime), 8);
-  put_string(service);
-  put(static_cast<uint32_t>(pid), 4);
-  put(static_cast<uint8_t>(state), 1);
-  put_string(detail);
-  put(static_cast<uint64_t>(uptime_us), 8);
-  put(0, 8 * 3);  // messages in/out, decode errors: not read
-  return b;
-}
-
-constexpr int64_t kFingerprint = 0x1234567890abcdefLL;
-
-TEST(PeekHeartbeatIdentity, ReadsServicePidStateAndStartTime) {
-  const auto bytes =
-      encoded_heartbeat(kFingerprint, "pose_solver", 4321, 4, "signal 15", 5'000'000, 1'500'000);
-  const auto id = peek_heartbeat_identity(bytes.data(), bytes.size(), kFingerprint, 4);
-  ASSERT_TRUE(id.has_value());
-  EXPECT_EQ(id->service, "pose_solver");
-  EXPECT_EQ(id->pid, 4321);
-  EXPECT_EQ(id->start_utime, 3'500'000);
-  EXPECT_TRUE(id->stopping);
-}
-
-TEST(PeekHeartbeatIdentity, RefusesOtherTypesTruncationAndLyingLengths) {
-  auto bytes = encoded_heartbeat(kFingerprint, "pose_solver", 1, 1, "", 5, 1);
-  EXPECT_FALSE(peek_heartbeat_identity(bytes.data(), bytes.size(), kFingerprint + 1, 4).has_value());
-  for (size_t cut = 0; cut < 8 + 8 + 4 + 12 + 4 + 1 + 5 + 8; ++cut)
-    EXPECT_FALSE(peek_heartbeat_identity(bytes.data(), cut, kFingerprint, 4).has_value()) << cut;
-  bytes[16] = 0x7f;  // service length 2^31-ish
-  EXPECT_FALSE(peek_heartbeat_identity(bytes.data(), bytes.size(), kFingerprint, 4).has_value());
-  bytes[16] = 0xff;  // negative length
-  EXPECT_FALSE(peek_heartbeat_identity(bytes.data(), bytes.size(), kFingerprint, 4).has_value());
-}
-
 }  // namespace
 }  // namespace refloc
