@@ -72,7 +72,8 @@ int run(const std::string& lcm_url, const std::string& config_path) {
     publish(node.on_goal(to_goal(msg), now), now);
   });
   runtime.subscribe<pose2d_t>(config.pose_channel, [&](const pose2d_t& msg) {
-    node.on_pose({msg.x, msg.y, msg.theta}, msg.utime, to_quality(msg.status));
+    node.on_pose({msg.x, msg.y, msg.theta}, msg.utime, to_quality(msg.status), now_utime());
+    report_events(runtime, node.events());
   });
   runtime.add_periodic(1.0 / config.control_rate, [&] {
     const int64_t now = now_utime();

@@ -1,5 +1,7 @@
 #include "navigator/navigator.hpp"
 
+#include "navigator/navigator_input_checks.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -54,16 +56,9 @@ bool Navigator::set_goal(const NavGoal& goal, int64_t now_utime) {
     abort("cancelled: goal without waypoints");
     return true;
   }
-  for (size_t i = 0; i < goal.waypoints.size(); ++i) {
-    const Waypoint& w = goal.waypoints[i];
-    if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.theta)) {
-      abort(fmt::format("invalid goal: waypoint {} is not finite", i));
-      return true;
-    }
-  }
-  if (!std::isfinite(goal.xy_tolerance) || !std::isfinite(goal.heading_tolerance) ||
-      !std::isfinite(goal.max_speed)) {
-    abort("invalid goal: tolerance or speed is not finite");
+  const GoalCheck check = check_goal(goal);
+  if (check.problem != NavInputProblem::kNone) {
+    abort(check.reason);
     return true;
   }
   xy_tolerance_ = goal.xy_tolerance > 0.0 ? goal.xy_tolerance : config_.default_xy_tolerance;
@@ -103,8 +98,13 @@ bool Navigator::pose_usable(int64_t now_utime, std::string& why_not) const {
     return false;
   }
   const double age = 1e-6 * static_cast<double>(now_utime - pose_utime_);
-  if (age > config_.pose_timeout) {
+  if (!(age <= config_.pose_timeout)) {
     why_not = fmt::format("pose is {:.0f} ms old (limit {:.0f} ms)", age * 1e3, config_.pose_timeout * 1e3);
+    return false;
+  }
+  // A pose stamped ahead of the host clock is not "fresh": it would stay so forever.
+  if (!(age >= -kMaxPoseAhead_s)) {
+    why_not = fmt::format("pose is stamped {:.0f} ms in the future", -age * 1e3);
     return false;
   }
   if (pose_quality_ == PoseQuality::kUnusable ||

@@ -63,10 +63,13 @@ enum class PoseQuality { kGood, kDegraded, kUnusable };
 
 class Navigator {
  public:
+  /// A pose stamped this far ahead of now is not usable [s].
+  static constexpr double kMaxPoseAhead_s = 0.1;
+
   explicit Navigator(const NavigatorConfig& config);
 
   /// Start a new goal (replacing any current one) at now_utime [us]. An empty
-  /// goal cancels; a goal with non-finite values is refused (ABORTED with reason).
+  /// goal cancels; a goal with non-finite or absurd values is refused (ABORTED with reason, check_goal).
   /// The same goal again (same id and content, as a sender republishing it for
   /// late joiners does) is ignored: returns false.
   bool set_goal(const NavGoal& goal, int64_t now_utime);
@@ -76,6 +79,7 @@ class Navigator {
   BodyTwist update(int64_t now_utime);
 
   const NavStatus& status() const { return status_; }
+  const NavigatorConfig& config() const { return config_; }
 
  private:
   bool pose_usable(int64_t now_utime, std::string& why_not) const;

@@ -1,11 +1,39 @@
 #include "navigator/navigator_node.hpp"
 
+#include "navigator/navigator_input_checks.hpp"
+
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace refloc {
 namespace {
 
 bool goal_active(NavState s) { return s == NavState::kDriving || s == NavState::kStoppedNoPose; }
+
+const char* goal_counter(NavInputProblem p) {
+  return p == NavInputProblem::kNonFinite ? "rejected_nav_goal_nonfinite" : "rejected_nav_goal_out_of_bounds";
+}
+
+const char* pose_counter(NavInputProblem p) {
+  return p == NavInputProblem::kNonFinite ? "rejected_pose_nonfinite" : "rejected_pose_out_of_bounds";
+}
+
+const char* pose_stamp_counter(StampVerdict v) {
+  switch (v) {
+    case StampVerdict::kAhead:
+      return "rejected_pose_stamp_ahead";
+    case StampVerdict::kBehind:
+      return "rejected_pose_stamp_behind";
+    case StampVerdict::kNotIncreasing:
+      return "rejected_pose_stamp_not_increasing";
+    case StampVerdict::kReanchored:
+      return "reanchored_pose";
+    case StampVerdict::kAccepted:
+      break;
+  }
+  return nullptr;
+}
 
 }  // namespace
 
@@ -30,11 +58,33 @@ const NavStatus* NavigatorNode::status_to_publish(bool only_on_change) {
 NavigatorOutput NavigatorNode::on_goal(const NavGoal& goal, int64_t now_utime) {
   events_.clear();
   if (!navigator_.set_goal(goal, now_utime)) return {};  // republished, already running
-  if (navigator_.status().state == NavState::kAborted) events_.push_back(counted("goals_refused"));
+  if (navigator_.status().state == NavState::kAborted) {
+    events_.push_back(counted("goals_refused"));
+    const GoalCheck check = check_goal(goal);
+    if (check.problem != NavInputProblem::kNone) events_.push_back(counted(goal_counter(check.problem)));
+  }
   return {std::nullopt, status_to_publish(true)};
 }
 
-void NavigatorNode::on_pose(const Pose2& map_T_robot, int64_t pose_utime, PoseQuality quality) {
+void NavigatorNode::on_pose(const Pose2& map_T_robot, int64_t pose_utime, PoseQuality quality,
+                            int64_t host_utime) {
+  events_.clear();
+  const NavInputProblem problem = check_pose(map_T_robot);
+  if (problem != NavInputProblem::kNone) {
+    events_.push_back({pose_counter(problem), NodeEvent::Level::kWarn,
+                       fmt::format("POSE at utime {} refused: {} pose", pose_utime, to_string(problem))});
+    return;
+  }
+  const StampVerdict verdict = pose_stamps_.check(pose_utime, host_utime);
+  if (!stamp_accepted(verdict)) {
+    events_.push_back({pose_stamp_counter(verdict), NodeEvent::Level::kWarn,
+                       fmt::format("POSE at utime {} refused: stamp {}", pose_utime, to_string(verdict))});
+    return;
+  }
+  if (verdict == StampVerdict::kReanchored) {
+    events_.push_back({pose_stamp_counter(verdict), NodeEvent::Level::kWarn,
+                       "POSE clock stepped: the stream's stamps are believed from here"});
+  }
   navigator_.set_pose(map_T_robot, pose_utime, quality);
 }
 
@@ -49,7 +99,17 @@ NavigatorOutput NavigatorNode::on_control_tick(int64_t now_utime) {
   if (goal_active(before) || goal_active(after)) last_active_utime_ = now_utime;
   NavigatorOutput out;
   // Fall silent a while after a goal ends so another commander (teleoperation) may drive.
-  if (now_utime - last_active_utime_ <= kCommandHoldUs) out.command = cmd;
+  if (now_utime - last_active_utime_ <= kCommandHoldUs) {
+    const NavigatorConfig& c = navigator_.config();
+    bool changed = false;
+    out.command = bounded_command(cmd, c.translation.max_speed, c.rotation.max_speed, changed);
+    if (changed) {
+      const bool finite = std::isfinite(cmd.vx) && std::isfinite(cmd.vy) && std::isfinite(cmd.wz);
+      events_.push_back({finite ? "commands_clamped" : "commands_nonfinite_zeroed", NodeEvent::Level::kWarn,
+                         fmt::format("CMD_VEL ({}, {}, {}) {}", cmd.vx, cmd.vy, cmd.wz,
+                                     finite ? "above the limits: clamped" : "not finite: zero instead")});
+    }
+  }
   out.status = status_to_publish(true);
   return out;
 }

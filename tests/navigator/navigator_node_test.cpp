@@ -62,12 +62,12 @@ TEST(NavigatorNode, InvalidGoalIsCountedAsRefused) {
 TEST(NavigatorNode, LosingThePoseStopsOnceCountedAndDegradesTheHeartbeat) {
   NavigatorNode node{NavigatorConfig{}};
   node.on_goal(goal_to(2.0), kT0);
-  node.on_pose({}, kT0, PoseQuality::kGood);
+  node.on_pose({}, kT0, PoseQuality::kGood, kT0);
   const NavigatorOutput driving = node.on_control_tick(kT0 + kPeriod);
   ASSERT_TRUE(driving.command);
   EXPECT_GT(driving.command->vx, 0.0);
   EXPECT_TRUE(node.health().ok);
-  node.on_pose({}, kT0 + kPeriod, PoseQuality::kUnusable);
+  node.on_pose({}, kT0 + kPeriod, PoseQuality::kUnusable, kT0 + kPeriod);
   const NavigatorOutput stopped = node.on_control_tick(kT0 + 2 * kPeriod);
   ASSERT_TRUE(stopped.command);
   EXPECT_EQ(stopped.command->vx, 0.0);
@@ -82,7 +82,7 @@ TEST(NavigatorNode, LosingThePoseStopsOnceCountedAndDegradesTheHeartbeat) {
 TEST(NavigatorNode, CommandsContinueHalfASecondAfterTheGoalEnds) {
   NavigatorNode node{NavigatorConfig{}};
   node.on_goal(goal_to(2.0), kT0);
-  node.on_pose({}, kT0, PoseQuality::kGood);
+  node.on_pose({}, kT0, PoseQuality::kGood, kT0);
   node.on_control_tick(kT0 + kPeriod);
   const NavigatorOutput cancelled = node.on_goal(NavGoal{8, {}, 0.0, 0.0, 0.0}, kT0 + 2 * kPeriod);
   ASSERT_NE(cancelled.status, nullptr);
