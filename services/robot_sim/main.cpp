@@ -4,6 +4,7 @@
 // laser's true, moving pose beam by beam.
 
 #include "common/clock.hpp"
+#include "common/node_event_report.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
@@ -59,7 +60,8 @@ int run(const ServiceCommandLine& cli, const SimOverrides& overrides) {
   }
 
   runtime.subscribe<twist_t>(setup.command_channel, [&](const twist_t& msg) {
-    if (!node.on_command({msg.vx, msg.vy, msg.wz}, now_utime())) ++runtime.counter("invalid_commands");
+    node.on_command({msg.vx, msg.vy, msg.wz}, now_utime());
+    report_events(runtime, node.events());
   });
   runtime.add_periodic(1.0 / setup.encoder_rate, [&] {
     const EncoderSample sample = node.encoder_tick(now_utime());

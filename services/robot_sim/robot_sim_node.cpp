@@ -1,5 +1,9 @@
 #include "robot_sim/robot_sim_node.hpp"
 
+#include "common/input_sanity.hpp"
+
+#include <fmt/format.h>
+
 #include <cmath>
 
 namespace refloc {
@@ -9,12 +13,30 @@ RobotSimNode::RobotSimNode(const RobotConfig& robot, const PlantSetup& setup, in
       plant_(robot, setup.plant, setup.initial_map_T_robot, start_utime),
       encoders_(robot.encoder_ticks_per_rev, setup.encoder_start_ticks),
       step_us_(static_cast<int64_t>(std::llround(setup.plant.step * 1e6))),
-      laser_poses_(std::make_shared<PoseHistory>(kLaserPoseHistory)) {
+      laser_poses_(std::make_shared<PoseHistory>(kLaserPoseHistory)),
+      max_speed_m_s_(robot.max_wheel_speed * robot.wheel_radius),
+      max_yaw_rate_rad_s_(robot.max_wheel_speed * robot.wheel_radius /
+                          (robot.half_wheelbase_lx + robot.half_track_ly)) {
   laser_poses_->add(plant_.utime(), plant_.map_T_robot() * robot_T_laser_);
 }
 
 bool RobotSimNode::on_command(const BodyTwist& twist, int64_t receipt_utime) {
-  if (!std::isfinite(twist.vx) || !std::isfinite(twist.vy) || !std::isfinite(twist.wz)) return false;
+  events_.clear();
+  if (!all_finite({twist.vx, twist.vy, twist.wz})) {
+    events_.push_back(
+        {"rejected_cmd_vel_nonfinite", NodeEvent::Level::kWarn,
+         fmt::format("CMD_VEL ({}, {}, {}) refused: not finite", twist.vx, twist.vy, twist.wz)});
+    return false;
+  }
+  const double speed_bound = kAbsurdCommandFactor * max_speed_m_s_;
+  const double yaw_bound = kAbsurdCommandFactor * max_yaw_rate_rad_s_;
+  if (!finite_abs_at_most(twist.vx, speed_bound) || !finite_abs_at_most(twist.vy, speed_bound) ||
+      !finite_abs_at_most(twist.wz, yaw_bound)) {
+    events_.push_back({"rejected_cmd_vel_out_of_bounds", NodeEvent::Level::kWarn,
+                       fmt::format("CMD_VEL ({}, {}, {}) refused: beyond {:.1f} m/s or {:.1f} rad/s",
+                                   twist.vx, twist.vy, twist.wz, speed_bound, yaw_bound)});
+    return false;
+  }
   plant_.command(twist, receipt_utime);
   return true;
 }

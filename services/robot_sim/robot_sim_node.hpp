@@ -3,7 +3,15 @@
 // accepted when finite and timed by its receipt; every tick advances the plant in its
 // fixed internal steps up to now, recording the laser's true pose at each step for the
 // renderer; the encoder tick reports the counts and whether the command just timed out.
+//
+// A command is refused (counted rejected_cmd_vel_nonfinite / rejected_cmd_vel_out_of_bounds,
+// previous command kept) when a component is not finite or beyond kAbsurdCommandFactor times
+// what the robot can do at max_wheel_speed (robot.json): such a number is a broken
+// publisher, and 1e308 m/s would overflow the kinematics into NaN. Within that bound the
+// plant scales the four wheel speeds down to max_wheel_speed together, as a motor controller
+// saturates. CMD_VEL's stamp is not read: a command's age is judged from its receipt.
 
+#include "common/node_event.hpp"
 #include "common/robot_config.hpp"
 #include "common/se2.hpp"
 #include "robot_sim/encoder_model.hpp"
@@ -14,6 +22,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace refloc {
 
@@ -35,9 +44,15 @@ class RobotSimNode {
 
   RobotSimNode(const RobotConfig& robot, const PlantSetup& setup, int64_t start_utime);
 
-  /// A CMD_VEL twist [m/s, m/s, rad/s] received at receipt_utime [us]; false (and ignored)
-  /// when a component is not finite. Age is judged from receipt, as a motor controller does.
+  /// Commands beyond this many times the robot's reach are refused.
+  static constexpr double kAbsurdCommandFactor = 10.0;
+
+  /// A CMD_VEL twist [m/s, m/s, rad/s] received at receipt_utime [us]; false (ignored,
+  /// counted in events()) when not finite or absurd. Age is judged from receipt, as a
+  /// motor controller does.
   bool on_command(const BodyTwist& twist, int64_t receipt_utime);
+  /// Counters and warnings of the last on_command call.
+  const std::vector<NodeEvent>& events() const { return events_; }
   /// Simulates in whole internal steps up to now_utime [us].
   void advance(int64_t now_utime);
   /// advance() then the encoder counts.
@@ -56,6 +71,9 @@ class RobotSimNode {
   int64_t step_us_;
   std::shared_ptr<PoseHistory> laser_poses_;
   bool was_stale_ = true;
+  double max_speed_m_s_;       ///< body speed at max_wheel_speed
+  double max_yaw_rate_rad_s_;  ///< yaw rate at max_wheel_speed
+  std::vector<NodeEvent> events_;
 };
 
 }  // namespace refloc
