@@ -1,9 +1,13 @@
 // The lms100_driver executable as a real process against the lms100_emulator
 // process, inside a private network namespace (run_in_netns.sh): LMS100_SCAN at
 // 50 Hz, the link's counters and state in HEARTBEAT, recovery when the emulator
-// is killed and restarted, exit 0 on SIGTERM, exit 2 on a bad config.
+// is killed and restarted, implausible scan headers refused (counted, DEGRADED with the
+// reason, recovery), exit 0 on SIGTERM, exit 2 on a bad config.
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <lcm/lcm-cpp.hpp>
 #include <refloc/heartbeat_t.hpp>
 #include <refloc/laser_scan_t.hpp>
@@ -137,6 +141,95 @@ TEST(Lms100DriverProcess, PublishesScansAndRecoversWhenTheEmulatorIsKilledAndRes
            counter(c.driver_heartbeats.back(), "reconnects") >= 2;
   }));
 
+  EXPECT_EQ(driver.stop(), 0);
+}
+
+// The emulator with its fault commands on a FIFO as stdin: the test holds the FIFO open
+// read-write, so neither side ever blocks opening it.
+class CommandedEmulator {
+ public:
+  CommandedEmulator() {
+    ::unlink(fifo_.c_str());
+    if (::mkfifo(fifo_.c_str(), 0600) == 0) fd_ = ::open(fifo_.c_str(), O_RDWR);
+    std::string command = "exec";
+    for (const auto& a : emulator_argv()) command += " " + a;
+    process_.start({"/bin/sh", "-c", command + " --control-stdin < " + fifo_},
+                   kLogDir + "lms100_driver_process_faults_emulator.log");
+  }
+  ~CommandedEmulator() {
+    process_.stop();
+    if (fd_ >= 0) ::close(fd_);
+    ::unlink(fifo_.c_str());
+  }
+  bool send(const std::string& line) {
+    const std::string text = line + "\n";
+    return fd_ >= 0 && ::write(fd_, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+  }
+
+ private:
+  std::string fifo_ = kLogDir + "lms100_driver_process_faults.fifo";
+  int fd_ = -1;
+  testing::ChildProcess process_;
+};
+
+bool degraded_for(const heartbeat_t& hb, const std::string& reason) {
+  return hb.state == heartbeat_t::STATE_DEGRADED &&
+         hb.state_detail.find("refusing implausible scans: " + reason) != std::string::npos;
+}
+
+TEST(Lms100DriverProcess, RefusesImplausibleHeadersCountsThemSaysWhyAndRecovers) {
+  lcm::LCM lcm(kUrl);
+  ASSERT_TRUE(lcm.good());
+  Collector c;
+  lcm.subscribe("HEARTBEAT", &Collector::on_heartbeat, &c);
+  lcm.subscribe("LMS100_SCAN", &Collector::on_scan, &c);
+  const std::string config = write_config("lms100_driver_process_faults.json", R"({"error_after_s": 30.0})");
+  CommandedEmulator emulator;
+  testing::ChildProcess driver(driver_argv(config), kLogDir + "lms100_driver_process_faults_driver.log");
+  const auto ok_again = [&] {
+    return !c.driver_heartbeats.empty() && c.driver_heartbeats.back().state == heartbeat_t::STATE_OK;
+  };
+  ASSERT_TRUE(spin_until(lcm, 5s, [&] { return c.scans.size() >= 50 && ok_again(); }));
+
+  struct Fault {
+    const char* command;
+    const char* counter;
+    const char* reason;
+  };
+  const Fault faults[] = {
+      {"scale -1", "implausible_scale", "DIST1 scale factor -1"},
+      {"scale 0", "implausible_scale", "DIST1 scale factor 0"},
+      {"offset 1000000", "implausible_offset", "DIST1 offset 1000000 mm"},
+      {"scan-frequency 1", "implausible_scan_frequency", "scan frequency 0.01 Hz, period 100.000 s"},
+      {"beam-rate 10", "implausible_beam_timing", "541 beams x 1000.0 us"}};
+  for (const Fault& f : faults) {
+    SCOPED_TRACE(f.command);
+    ASSERT_TRUE(emulator.send(f.command));
+    ASSERT_TRUE(spin_until(lcm, 4s, [&] {
+      return !c.driver_heartbeats.empty() && degraded_for(c.driver_heartbeats.back(), f.reason) &&
+             counter(c.driver_heartbeats.back(), f.counter) > 0;
+    })) << (c.driver_heartbeats.empty() ? "no heartbeat" : c.driver_heartbeats.back().state_detail);
+    const size_t during = c.scans.size();
+    spin_until(lcm, 300ms, [] { return false; });
+    EXPECT_EQ(c.scans.size(), during) << "a refused scan was published";
+    ASSERT_TRUE(emulator.send("header ok"));
+    const size_t before = c.scans.size();
+    ASSERT_TRUE(spin_until(lcm, 5s, [&] { return c.scans.size() > before + 10 && ok_again(); }))
+        << "no recovery after the fault ended";
+    for (size_t k = before; k < c.scans.size(); ++k)
+      for (const float r : c.scans[k].ranges) ASSERT_GE(r, 0.0F) << "negative range published";
+  }
+  EXPECT_GE(counter(c.driver_heartbeats.back(), "implausible_scans"), 5);
+  EXPECT_EQ(counter(c.driver_heartbeats.back(), "reconnects"), 0) << "refused scans are not a link failure";
+
+  // Reserved codes 2..15 are published, as no echo, and counted; the state stays OK.
+  ASSERT_TRUE(emulator.send("codes on"));
+  const size_t before = c.scans.size();
+  ASSERT_TRUE(spin_until(lcm, 3s, [&] { return c.scans.size() > before + 10; }));
+  for (size_t i = 0; i < 14; ++i) EXPECT_EQ(c.scans.back().ranges[i], 0.0F) << "beam " << i;
+  EXPECT_TRUE(spin_until(lcm, 3s, [&] {
+    return ok_again() && counter(c.driver_heartbeats.back(), "reserved_distance_codes") >= 14;
+  }));
   EXPECT_EQ(driver.stop(), 0);
 }
 
