@@ -175,7 +175,7 @@ ReceiveBufferCheck check_receive_buffer(int64_t requested_bytes, int64_t rmem_ma
   check.warning = fmt::format(
       "the kernel caps the LCM receive buffer at net.core.rmem_max = {} bytes, below the {} the URL asks "
       "for: a stall of this process will lose messages; run `sysctl -w net.core.rmem_max={}` as root "
-      "(deploy/install-deps.sh makes it permanent in /etc/sysctl.d/60-refloc.conf)",
+      "and keep it in /etc/sysctl.d/ (deploy/install-deps.sh writes 60-refloc.conf for the default URL)",
       rmem_max_bytes, requested_bytes, requested_bytes);
   return check;
 }
