@@ -10,7 +10,7 @@ int64_t StreamGapCounter::on_stamp(int64_t utime) {
   have_previous_ = true;
   previous_utime_ = utime;
   if (!had_previous || utime <= previous) return 0;
-  const double interval_us = static_cast<double>(utime - previous);
+  const double interval_us = static_cast<double>(utime) - static_cast<double>(previous);  // cannot overflow
   if (period_us_ <= 0.0 || interval_us < 0.5 * period_us_) {
     period_us_ = interval_us;
     return 0;

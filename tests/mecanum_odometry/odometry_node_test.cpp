@@ -36,7 +36,7 @@ TEST(OdometryNode, GapAndImplausibleSpeedAreCountedAndWarned) {
   OdometryServiceConfig config;
   config.odometry.max_gap = 0.5;
   OdometryNode node(RobotConfig{}, config);
-  node.on_encoders({0, {0, 0, 0, 0}}, 1, host(0));
+  node.on_encoders({1, {0, 0, 0, 0}}, 1, host(1));
   ASSERT_NE(node.on_encoders({2'000'000, {10, 10, 10, 10}}, 2, host(2'000'000)), nullptr);
   EXPECT_EQ(count(node.events(), "gap_restarts"), 1);
   EXPECT_EQ(node.events()[0].level, NodeEvent::Level::kWarn);
@@ -49,7 +49,7 @@ TEST(OdometryNode, GapAndImplausibleSpeedAreCountedAndWarned) {
 
 TEST(OdometryNode, WheelsDisagreeingCountAsSlip) {
   OdometryNode node(RobotConfig{}, OdometryServiceConfig{});
-  node.on_encoders({0, {0, 0, 0, 0}}, 1, host(0));
+  node.on_encoders({1, {0, 0, 0, 0}}, 1, host(1));
   node.on_encoders({10'000, {100, 100, 100, 100}}, 2, host(10'000));
   EXPECT_EQ(count(node.events(), "slip_samples"), 0);
   // Front-left turns 200 ticks further than the rest in 10 ms: 1.8 m/s of disagreement.
@@ -61,16 +61,16 @@ TEST(OdometryNode, HealthyWhileSamplesArriveWithinASecond) {
   OdometryNode node(RobotConfig{}, OdometryServiceConfig{});
   EXPECT_FALSE(node.health(5'000'000).ok);
   EXPECT_EQ(node.health(5'000'000).detail, "no WHEEL_ENCODERS for 1 s");
-  node.on_encoders({0, {0, 0, 0, 0}}, 5'000'000, host(0));
+  node.on_encoders({1, {0, 0, 0, 0}}, 5'000'000, host(1));
   EXPECT_TRUE(node.health(5'999'999).ok);
   EXPECT_FALSE(node.health(6'000'000).ok);
 }
 
 TEST(OdometryNode, SamplesArrivingButNoneAcceptedIsDegradedNamingTheRefusal) {
   OdometryNode node(RobotConfig{}, OdometryServiceConfig{});
-  node.on_encoders({0, {0, 0, 0, 0}}, 5'000'000, host(0));
+  node.on_encoders({1, {0, 0, 0, 0}}, 5'000'000, host(1));
   // Samples keep arriving, each stamped no newer than the last: nothing is published.
-  for (int64_t t = 5'100'000; t <= 6'500'000; t += 100'000) node.on_encoders({0, {0, 0, 0, 0}}, t, host(0));
+  for (int64_t t = 5'100'000; t <= 6'500'000; t += 100'000) node.on_encoders({1, {0, 0, 0, 0}}, t, host(1));
   const OdometryHealth h = node.health(6'500'000);
   EXPECT_FALSE(h.ok);
   EXPECT_EQ(h.detail,

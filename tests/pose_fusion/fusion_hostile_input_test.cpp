@@ -134,6 +134,24 @@ TEST(FusionHostileInput, OdometryStampedFarFromTheClockIsRefusedAndNeitherStalls
   }
 }
 
+TEST(FusionHostileInput, APersistentStreamOfInt64LimitStampsNeverBecomesTheStreamsClock) {
+  for (const int64_t stamp :
+       {std::numeric_limits<int64_t>::min(), std::numeric_limits<int64_t>::max(), int64_t{0}}) {
+    Drive d;
+    d.run(0, 50);
+    int reanchored = 0;
+    for (int k = 50; k < 150; ++k) {  // one forged message before each genuine one, for 1 s
+      OdometrySample forged = d.odometry_at(k);
+      forged.utime = stamp;
+      EXPECT_EQ(d.node.on_odometry(forged, d.mono(k), d.host(k)), nullptr);
+      reanchored += count(d.node.events(), "reanchored_odometry");
+      ASSERT_NE(d.step(k), nullptr) << stamp << " at " << k;
+    }
+    EXPECT_EQ(reanchored, 0) << stamp;
+    expect_good_and_ok(d.run(150, 160), 159, std::to_string(stamp));
+  }
+}
+
 TEST(FusionHostileInput, FixStampedInTheFutureNeitherReinitialisesNorMovesThePose) {
   for (const int64_t ahead : {kHour, int64_t{2'000'000}, int64_t{300'000}}) {
     Drive d;
