@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Hostile bus (issue 11), in a private netns (tests/tools/run_in_netns.sh): the whole stack under
 # supervisord (deploy/refloc) drives tests/ops/data/restart_mission.json while ops_hostile_peer
-# sends, phase after phase in bursts of 4 at 8 a second, lying array and string lengths (-1,
+# sends, phase after phase in bursts of 4 at 10 a second, lying array and string lengths (-1,
 # 2^31-1, 50,000,000, one more than the bytes left; every subscribed type cut one byte short),
 # stamps +1 h / INT64_MAX / -1 h / 0, absurd twists (1e308 m/s, 1e6 rad/s) and NaN / inf /
 # 1e300 in every numeric field, each built from the latest real message of its channel.
@@ -17,7 +17,7 @@
 #              > 0.1 m from GROUND_TRUTH, every hostile datagram counted in the receiving
 #              service's HEARTBEAT (decode_errors + rejection counters) per phase.
 # Not attacked: GROUND_TRUTH and NAV_STATUS (only refloc-mission reads them: it is the referee),
-# HEARTBEAT is attacked though no service subscribes to it (lcm-logger and refloc-status would).
+# HEARTBEAT is attacked too: every service's runtime reads it (a second instance of itself).
 set -euo pipefail
 repo="$1"
 build="$2"
@@ -73,7 +73,7 @@ done
 grep -q "^sent mission" "$tmp/mission.out" || fatal "the mission never started"
 sleep 1   # under way: the peer's bases are real messages of a driving robot
 
-"$build/bin/ops_hostile_peer" --record "$tmp/hostile.tsv" --rate 8 --burst 4 --phase-gap-s 2 \
+"$build/bin/ops_hostile_peer" --record "$tmp/hostile.tsv" --rate 10 --burst 4 --phase-gap-s 1.5 \
   >"$tmp/peer.out" 2>&1 &
 peer_pid=$!
 t_peer=$(date +%s)
@@ -99,7 +99,8 @@ echo "== processes: pid at start -> at end, peak RSS (VmHWM)"
 for p in "${programs[@]}"; do
   old="$(pid_in "$p" "$start_pids")" new="$(pid_in "$p" "$end_pids")"
   hwm="-"
-  [ -n "$new" ] && hwm="$(awk '/^VmHWM:/ {print $2}' "/proc/$new/status" 2>/dev/null || echo "-")"
+  [ -n "$new" ] && hwm="$(awk '/^VmHWM:/ {print $2}' "/proc/$new/status" 2>/dev/null || true)"
+  [ -n "$hwm" ] || hwm="-"
   printf '%-20s %8s -> %-8s %8s kB\n' "$p" "$old" "${new:-dead}" "$hwm"
   [ "$old" = "$new" ] || failures+=("alive: $p pid $old -> ${new:-not RUNNING} (died or restarted)")
   [ "$p" = lcm-logger ] && continue

@@ -10,7 +10,7 @@
 //              counters (names matching kRejectionCounter) grow by at least the datagrams
 //              of that phase on the channels it subscribes to (kSubscriptions, as in
 //              deploy/config/*.json), between its last HEARTBEAT before the phase's first
-//              datagram and its first HEARTBEAT 0.3 s after the last one;
+//              datagram and its first HEARTBEAT 0.2 s after the last one;
 //   alive      one pid per service over the whole log.
 //   hostile_log_check --log FILE --record FILE [--max-ok-error-m M]
 // Prints one table per check and "FAIL <check> <service/channel> <phase>: why" per failure.
@@ -65,7 +65,8 @@ int check_poses(const LogModel& log, double max_error_m) {
       if (error) worst = std::max(worst, *error);
       if (error && !(*error <= max_error_m)) ++far;
       if (first.empty() && (!error || !(*error <= max_error_m)))
-        first = fmt::format("utime {} ({}): {}", p.utime, log.phase_at(p.log_utime),
+        first = fmt::format("utime {} = logged {:+.3f} s ({}): {}", p.utime, (p.utime - p.log_utime) * 1e-6,
+                            log.phase_at(p.log_utime),
                             error ? fmt::format("{:.3f} m off", *error) : "no GROUND_TRUTH at that stamp");
     }
     fmt::print("{:<12} {:>8} {:>12.4f} {:>10} {:>12}\n", channel, ok, worst, far, untimed);
@@ -105,7 +106,7 @@ int check_counted(const LogModel& log) {
   int heartbeat_sent = 0;
   for (const auto& p : log.phases) heartbeat_sent += p.sent_on("HEARTBEAT");
   fmt::print(
-      "HEARTBEAT: no service subscribes to it (kSubscriptions); its {} datagrams are counted by nobody\n",
+      "HEARTBEAT: {} hostile datagrams, read by every service runtime (counter unreadable_heartbeats)\n",
       heartbeat_sent);
   fmt::print("\ncounters that grew during the run, per service (* = counted as rejections):\n");
   for (const auto& [service, names] : log.grown_counters()) fmt::print("  {:<20} {}\n", service, names);

@@ -13,21 +13,25 @@
 
 namespace refloc::hostile {
 
-/// Input channels per service, as in deploy/config/*.json (lms100_driver reads TCP only).
+/// Input channels per service, as in deploy/config/*.json; every ServiceRuntime also reads
+/// HEARTBEAT (a second instance of itself), counting unreadable ones (lms100_driver: TCP only).
 const std::vector<std::pair<std::string, std::vector<std::string>>> kSubscriptions = {
-    {"lms100_driver", {}},
-    {"reflector_extractor", {"LMS100_SCAN", "ODOMETRY"}},
-    {"reflector_matcher", {"REFLECTORS", "POSE"}},
-    {"pose_solver", {"REFLECTOR_MATCHES"}},
-    {"mecanum_odometry", {"WHEEL_ENCODERS"}},
-    {"pose_fusion", {"ODOMETRY", "LASER_POSE"}},
-    {"navigator", {"NAV_GOAL", "POSE"}},
-    {"robot_sim", {"CMD_VEL"}}};
+    {"lms100_driver", {"HEARTBEAT"}},
+    {"reflector_extractor", {"LMS100_SCAN", "ODOMETRY", "HEARTBEAT"}},
+    {"reflector_matcher", {"REFLECTORS", "POSE", "HEARTBEAT"}},
+    {"pose_solver", {"REFLECTOR_MATCHES", "HEARTBEAT"}},
+    {"mecanum_odometry", {"WHEEL_ENCODERS", "HEARTBEAT"}},
+    {"pose_fusion", {"ODOMETRY", "LASER_POSE", "HEARTBEAT"}},
+    {"navigator", {"NAV_GOAL", "POSE", "HEARTBEAT"}},
+    {"robot_sim", {"CMD_VEL", "HEARTBEAT"}}};
 
-/// A HEARTBEAT counter counts rejections when its name matches this (ECMAScript, icase).
+/// A HEARTBEAT counter counts rejected input messages when its name matches kRejectionCounter
+/// and not kNotInputRejection (ECMAScript, icase): decode_errors is added separately; the
+/// extractor's rejected_occluded/shape/too_few_beams reject clusters of good scans, and
+/// aggregates (goals_refused = the navigator's rejected_nav_goal_*) would count twice.
 constexpr const char* kRejectionCounter =
-    "reject|invalid|finite|implausible|decode|stale|future|past|clock|order|ignored|discard|clamp|"
-    "skipped|inconsistent|bad_|absurd|out_of|dropped";
+    "^(rejected_|refused_|invalid_|unreadable_|implausible_|nonfinite_)";
+constexpr const char* kNotInputRejection = "^rejected_(occluded|shape|too_few_beams)$";
 
 struct Phase {
   std::string name;
