@@ -75,6 +75,20 @@ class ScanCounterGaps {
   int64_t stride_ = 0;  ///< 0 until the first advance
 };
 
+/// Stamp limits for a stream another service of the chain publishes (REFLECTORS,
+/// REFLECTOR_MATCHES, POSE): its stamps are scan or odometry times, and the time from
+/// there to our handler includes the upstream service's processing, which varies by far
+/// more than the default 0.1 s (a cold-started matcher's first global relocalization, a
+/// busy host). The guard learns the stream's offset from the first message, so with the
+/// default every prompt message after a slow first one would be "ahead" and lost until
+/// the guard re-anchors (measured: 30 LASER_POSE of a 4 s replay). 1 s still rejects
+/// every forged far-future stamp (+1 h, INT64_MAX).
+inline StampGuardLimits chain_stream_stamp_limits() {
+  StampGuardLimits limits;
+  limits.max_ahead_us = 1'000'000;
+  return limits;
+}
+
 /// One input stream's counter names, checks and health. <input> is the short stream name of the
 /// heartbeat counters: rejected_<input>_<reason>, reanchored_<input>,
 /// gap_<input>_messages, counter_reset_<input>.

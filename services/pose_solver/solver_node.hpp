@@ -85,7 +85,7 @@ class SolverNode {
   LaserFix fix_;
   std::vector<ReflectorDetection> matched_detections_;
   std::vector<ReflectorMatch> matches_;
-  InputStreamChecks match_checks_{"matches"};
+  InputStreamChecks match_checks_{"matches", chain_stream_stamp_limits()};
   SolverOutput output_;
 };
 

@@ -9,7 +9,7 @@ namespace refloc {
 namespace {
 
 StampGuardLimits pose_stamp_limits() {
-  StampGuardLimits limits;
+  StampGuardLimits limits = chain_stream_stamp_limits();
   limits.require_increasing = false;
   return limits;
 }
@@ -19,6 +19,7 @@ StampGuardLimits pose_stamp_limits() {
 MatcherNode::MatcherNode(ReflectorMap map, const MatcherServiceConfig& config, const Pose2& robot_T_laser)
     : matcher_(std::move(map), config.matcher),
       selector_(config.prior, robot_T_laser),
+      detection_checks_("detections", chain_stream_stamp_limits()),
       pose_checks_("pose", pose_stamp_limits()) {}
 
 const std::vector<NodeEvent>& MatcherNode::on_pose(const FusedPose& pose, int64_t host_utime) {

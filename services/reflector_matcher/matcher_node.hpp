@@ -78,7 +78,7 @@ class MatcherNode {
  private:
   ReflectorMatcher matcher_;
   PriorSelector selector_;
-  InputStreamChecks detection_checks_{"detections"};
+  InputStreamChecks detection_checks_;
   /// POSE stamps need not increase: fusion answers a laser fix with a pose at the fix's scan
   /// time, which can be older than its last pose from odometry.
   InputStreamChecks pose_checks_;
