@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cstring>
 
 namespace refloc {
 namespace {
@@ -135,6 +136,12 @@ class DatagramWalk {
       }
       if (here()[declared - 1] != 0) {
         reason = fmt::format("{}: string does not end in a NUL", name);
+        return false;
+      }
+      // LCM strings are C strings: lcm-gen encodes with strlen(), so a NUL inside would
+      // decode to one string and be republished as a shorter one.
+      if (std::memchr(here(), 0, static_cast<size_t>(declared - 1)) != nullptr) {
+        reason = fmt::format("{}: string has a NUL before its end", name);
         return false;
       }
       skip(declared);

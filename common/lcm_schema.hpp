@@ -53,9 +53,9 @@ const LcmSchema& lcm_schema_of();
 
 /// Why a datagram (fingerprint first, as LCM publishes it) cannot be a message of this schema
 /// within its limits: a declared length < 0, over the maximum or needing more bytes than are
-/// left, a string length < 1, over its maximum or without its NUL, a truncation, a wrong
-/// fingerprint or bytes after the end. Empty when the datagram is exactly one valid message.
-/// Allocates only for the reason; reads at most size bytes.
+/// left, a string length < 1, over its maximum, without its final NUL or with one inside, a truncation, a
+/// wrong fingerprint or bytes after the end. Empty when the datagram is exactly one valid message. Allocates
+/// only for the reason; reads at most size bytes.
 std::string check_lcm_datagram(const LcmSchema& schema, const uint8_t* data, size_t size);
 
 }  // namespace refloc

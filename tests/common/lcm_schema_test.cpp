@@ -193,6 +193,9 @@ TYPED_TEST(LcmSchemaCheck, LyingStringLengthsAreRefusedWithTheReason) {
     std::vector<uint8_t> no_nul = valid;
     no_nul[offsets[i] + 4 + static_cast<size_t>(read_int32(valid, offsets[i])) - 1] = 'x';
     EXPECT_EQ(refusal<TypeParam>(no_nul), name + ": string does not end in a NUL");
+    std::vector<uint8_t> inner_nul = valid;  // "service" -> "s\0rvice": re-encoded it would shrink
+    inner_nul[offsets[i] + 5] = 0;
+    EXPECT_EQ(refusal<TypeParam>(inner_nul), name + ": string has a NUL before its end");
   }
 }
 

@@ -2,7 +2,7 @@
 # Run every fuzz target of a build for a fixed time, one after another, at low priority, and
 # print the README table (target, minutes, executions, crashes, corpus). Seeds are read from
 # tests/fuzz/corpus/<target>/ and never written; the growing corpus and any crash artifacts
-# go to BUILD/fuzz-work/<target>/.
+# go to BUILD/fuzz-work/<target>/. REFLOC_FUZZ_NICE (default 19) is the nice level.
 #   tests/fuzz/run_fuzz.sh BUILD_DIR SECONDS_PER_TARGET [TARGET...]
 set -u
 build=${1:?usage: run_fuzz.sh BUILD_DIR SECONDS [TARGET...]}
@@ -23,7 +23,7 @@ for target in "${targets[@]}"; do
   work="$build/fuzz-work/$target"
   mkdir -p "$work/corpus" "$work/artifacts"
   log="$work/run.log"
-  nice -n 19 "$build/bin/$target" -max_total_time="$seconds" -max_len=$max_len -rss_limit_mb=512 \
+  nice -n "${REFLOC_FUZZ_NICE:-19}" "$build/bin/$target" -max_total_time="$seconds" -max_len=$max_len -rss_limit_mb=512 \
     -malloc_limit_mb=512 -timeout=10 -print_final_stats=1 -artifact_prefix="$work/artifacts/" \
     "$work/corpus" "$here/corpus/$target" > "$log" 2>&1
   executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
