@@ -15,14 +15,14 @@
 namespace refloc {
 
 struct DetectionBounds {
-  static constexpr double kMaxRange_m = 200.0;        ///< as the extractor's scan bound
-  static constexpr double kMaxVariance_m2 = 100.0;    ///< a 10 m sigma says nothing about a 6 cm cylinder
-  static constexpr double kMaxAbsBearing = 6.3;       ///< [rad]
-  static constexpr double kMaxFittedRadius_m = 10.0;  ///< a fitted radius, not a reflector size limit
+  static constexpr double kMaxRange_m = 200.0;      ///< as the extractor's scan bound
+  static constexpr double kMaxVariance_m2 = 100.0;  ///< a 10 m sigma says nothing about a 6 cm cylinder
+  static constexpr double kMaxAbsBearing = 6.3;     ///< [rad]
 };
 
 /// Finite fields; |centre| and range at most kMaxRange_m; |bearing| at most kMaxAbsBearing;
-/// 0 <= fitted radius <= kMaxFittedRadius_m; a covariance that is symmetric, positive
+/// fitted radius >= 0 (only informational: the paper mode's free circle fit gives 10-20 m
+/// for a 6 cm reflector's few beams); a covariance that is symmetric, positive
 /// semi-definite and no variance above kMaxVariance_m2 (reason "covariance").
 inline InputFault check_reflector_detection(const ReflectorDetection& d) {
   const Eigen::Matrix2d& c = d.covariance;
@@ -32,8 +32,7 @@ inline InputFault check_reflector_detection(const ReflectorDetection& d) {
                                      d.laser_p_center.y())};
   if (!(d.laser_p_center.norm() <= DetectionBounds::kMaxRange_m) ||
       !finite_within(d.range, 0.0, DetectionBounds::kMaxRange_m) ||
-      !finite_abs_at_most(d.bearing, DetectionBounds::kMaxAbsBearing) ||
-      !finite_within(d.fitted_radius_m, 0.0, DetectionBounds::kMaxFittedRadius_m))
+      !finite_abs_at_most(d.bearing, DetectionBounds::kMaxAbsBearing) || !(d.fitted_radius_m >= 0.0))
     return {"out_of_bounds",
             fmt::format("detection at ({}, {}) m, range {} m, bearing {} rad, radius {} m",
                         d.laser_p_center.x(), d.laser_p_center.y(), d.range, d.bearing, d.fitted_radius_m)};

@@ -79,7 +79,7 @@ class ExtractorNode {
   ReflectorExtractor extractor_;
   MotionCompensator compensator_;
   InputStreamChecks scan_checks_{"scan"};
-  InputStreamChecks odometry_checks_{"odometry"};
+  InputStreamChecks odometry_checks_{"odometry", chain_stream_stamp_limits()};  // from mecanum_odometry
   std::vector<NodeEvent> odometry_events_;
   ExtractorOutput output_;
 };

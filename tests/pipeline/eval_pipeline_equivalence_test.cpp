@@ -76,24 +76,32 @@ class ServiceChain {
   void on_pose(const pose2d_t& sent) { matcher_.on_pose(fused_pose_from_message(over_the_wire(sent))); }
   pose2d_t on_scan(const laser_scan_t& sent) {
     LaserScan scan;
-    EXPECT_TRUE(from_lcm(over_the_wire(sent), scan));
+    scan_from_message(over_the_wire(sent), scan);
     reflector_detections_t reflectors{};
-    to_message(extractor_.on_scan(scan), reflectors);
+    const ExtractorOutput& extracted = extractor_.on_scan(scan);
+    EXPECT_TRUE(extracted.accepted) << (extracted.events.empty() ? "" : extracted.events[0].log);
+    to_message(extracted, reflectors);
     reflectors = over_the_wire(reflectors);
 
     std::vector<ReflectorDetection> detections;
     detections_from_message(reflectors, detections);
     reflector_matches_t matches{};
-    to_message(reflectors, matcher_.on_detections(reflectors.utime, detections).result, matches);
+    // The message's own stamp is the host clock: the drive is replayed faster than real time.
+    const MatcherOutput& matched_scan =
+        matcher_.on_detections(reflectors.utime, reflectors.scan_counter, detections, reflectors.utime);
+    EXPECT_TRUE(matched_scan.accepted) << (matched_scan.events.empty() ? "" : matched_scan.events[0].log);
+    to_message(reflectors, matched_scan.result, matches);
     matches = over_the_wire(matches);
 
     std::vector<ReflectorDetection> matched;
     std::vector<ReflectorMatch> solver_matches;
     matches_from_message(matches, matched, solver_matches);
     pose2d_t laser_pose{};
-    to_message(solver_.on_matches(matches.utime, match_verdict_from_message(matches.status), matched,
-                                  solver_matches),
-               laser_pose);
+    const SolverOutput& solved =
+        solver_.on_message(matches.utime, matches.scan_counter, match_verdict_from_message(matches.status),
+                           matched, solver_matches, matches.utime);
+    EXPECT_TRUE(solved.accepted) << (solved.events.empty() ? "" : solved.events[0].log);
+    if (solved.accepted) to_message(*solved.fix, laser_pose);
     return over_the_wire(laser_pose);
   }
 
