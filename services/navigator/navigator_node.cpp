@@ -68,6 +68,20 @@ const NavStatus* NavigatorNode::status_to_publish(bool only_on_change) {
 
 NavigatorOutput NavigatorNode::on_goal(const NavGoal& goal, int64_t now_utime) {
   events_.clear();
+  // A goal with broken numbers must not end the goal being driven: a buggy or hostile sender
+  // (even one reusing the active goal's id) would otherwise stop every mission. While a goal is
+  // active it is refused on the side, counted and logged; with nothing active it is ABORTED with
+  // its reason in NAV_STATUS, so its sender hears why.
+  if (!goal.waypoints.empty() && goal_active(navigator_.status().state)) {
+    const GoalCheck check = check_goal(goal);
+    if (check.problem != NavInputProblem::kNone) {
+      events_.push_back(counted("goals_refused"));
+      events_.push_back({goal_counter(check.problem), NodeEvent::Level::kWarn,
+                         fmt::format("NAV_GOAL {} refused, goal {} goes on: {}", goal.goal_id,
+                                     navigator_.status().goal_id, check.reason)});
+      return {};
+    }
+  }
   if (!navigator_.set_goal(goal, now_utime)) return {};  // republished, already running
   if (navigator_.status().state == NavState::kAborted) {
     events_.push_back(counted("goals_refused"));

@@ -90,6 +90,19 @@ TEST(NavigatorHostileInput, GoalWithNonFiniteOrAbsurdNumbersIsRefusedCountedAndT
   }
 }
 
+TEST(NavigatorHostileInput, ABrokenGoalWhileDrivingIsRefusedAndTheActiveGoalGoesOn) {
+  NavigatorNode node{NavigatorConfig{}};
+  node.on_goal(goal_to(2.0), kT0);
+  ASSERT_GT(drive(node, 1, 10), 0.0);
+  NavGoal hostile = goal_to(2.0);  // the active goal's own id, as a copy-and-poison peer sends it
+  hostile.xy_tolerance = kNaN;
+  const NavigatorOutput out = node.on_goal(hostile, kT0 + 10 * kPeriod);
+  EXPECT_EQ(out.status, nullptr) << "no status for the refused goal: it would read as the active one's";
+  EXPECT_EQ(count(node.events(), "goals_refused"), 1);
+  EXPECT_EQ(count(node.events(), "rejected_nav_goal_nonfinite"), 1);
+  EXPECT_GT(drive(node, 11, 20), 0.0) << "the active goal is still driven";
+}
+
 TEST(NavigatorHostileInput, PoseWithNonFiniteOrAbsurdValuesIsRefusedAndTheRobotStopsWhenNoGoodOneFollows) {
   for (const double bad : {kNaN, kInf, -kInf, 1e300, -1e300}) {
     for (int field = 0; field < 3; ++field) {
