@@ -36,6 +36,7 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   spdlog::info("map {}: {} reflectors, {} triangles indexed, mode {}", config.map_file,
                node.matcher().map().reflectors.size(), node.matcher().indexed_triangles(),
                config.matcher.mode == MatcherMode::kPaper ? "paper" : "default");
+  for (const std::string& w : node.matcher().map().warnings) spdlog::warn("map {}: {}", config.map_file, w);
 
   ServiceRuntime runtime("reflector_matcher", lcm_url);
   std::vector<ReflectorDetection> detections;
