@@ -40,7 +40,14 @@ const char* to_string(StampVerdict verdict) {
 
 StampGuard::StampGuard(StampGuardLimits limits) : limits_(limits) {}
 
+// Stamps outside (0, 1e17 us] (after the year 5138) are no clock at all. They are refused
+// before they can count towards a re-anchor, so a persistent INT64_MIN/INT64_MAX stream never
+// becomes the stream's clock and no later stamp difference can overflow.
+constexpr int64_t kMaxPlausibleStamp_us = 100'000'000'000'000'000;
+
 StampVerdict StampGuard::check(int64_t stamp_utime, int64_t host_utime) {
+  if (stamp_utime <= 0) return StampVerdict::kBehind;
+  if (stamp_utime > kMaxPlausibleStamp_us) return StampVerdict::kAhead;
   const int64_t offset_us = saturating_difference(host_utime, stamp_utime);
   if (!anchored_) {
     anchored_ = true;

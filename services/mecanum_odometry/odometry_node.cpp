@@ -7,17 +7,6 @@
 namespace refloc {
 namespace {
 
-// Stamps outside (0, 1e17 us] (after the year 5138) are no clock at all: refused before
-// the StampGuard sees them, so a persistent INT64_MIN/INT64_MAX stream can never become
-// the stream's clock (and no later stamp difference can overflow).
-constexpr int64_t kMaxPlausibleStamp_us = 100'000'000'000'000'000;
-
-StampVerdict judge_stamp(StampGuard& guard, int64_t stamp_utime, int64_t host_utime) {
-  if (stamp_utime <= 0) return StampVerdict::kBehind;
-  if (stamp_utime > kMaxPlausibleStamp_us) return StampVerdict::kAhead;
-  return guard.check(stamp_utime, host_utime);
-}
-
 const char* stamp_counter(StampVerdict v) {
   switch (v) {
     case StampVerdict::kAhead:
@@ -55,7 +44,7 @@ const OdometryEstimate* OdometryNode::on_encoders(const EncoderReading& reading,
                                                   int64_t host_utime) {
   events_.clear();
   last_sample_mono_us_ = now_mono_us;
-  const StampVerdict verdict = judge_stamp(stamps_, reading.utime, host_utime);
+  const StampVerdict verdict = stamps_.check(reading.utime, host_utime);
   if (!stamp_accepted(verdict)) {
     reject(
         stamp_counter(verdict),

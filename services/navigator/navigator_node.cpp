@@ -9,17 +9,6 @@
 namespace refloc {
 namespace {
 
-// Stamps outside (0, 1e17 us] (after the year 5138) are no clock at all: refused before
-// the StampGuard sees them, so a persistent INT64_MIN/INT64_MAX stream can never become
-// the stream's clock (and no later stamp difference can overflow).
-constexpr int64_t kMaxPlausibleStamp_us = 100'000'000'000'000'000;
-
-StampVerdict judge_stamp(StampGuard& guard, int64_t stamp_utime, int64_t host_utime) {
-  if (stamp_utime <= 0) return StampVerdict::kBehind;
-  if (stamp_utime > kMaxPlausibleStamp_us) return StampVerdict::kAhead;
-  return guard.check(stamp_utime, host_utime);
-}
-
 bool goal_active(NavState s) { return s == NavState::kDriving || s == NavState::kStoppedNoPose; }
 
 const char* goal_counter(NavInputProblem p) {
@@ -100,7 +89,7 @@ void NavigatorNode::on_pose(const Pose2& map_T_robot, int64_t pose_utime, PoseQu
                        fmt::format("POSE at utime {} refused: {} pose", pose_utime, to_string(problem))});
     return;
   }
-  const StampVerdict verdict = judge_stamp(pose_stamps_, pose_utime, host_utime);
+  const StampVerdict verdict = pose_stamps_.check(pose_utime, host_utime);
   if (!stamp_accepted(verdict)) {
     events_.push_back({pose_stamp_counter(verdict), NodeEvent::Level::kWarn,
                        fmt::format("POSE at utime {} refused: stamp {}", pose_utime, to_string(verdict))});

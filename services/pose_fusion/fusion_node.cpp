@@ -8,17 +8,6 @@
 namespace refloc {
 namespace {
 
-// Stamps outside (0, 1e17 us] (after the year 5138) are no clock at all: refused before
-// the StampGuard sees them, so a persistent INT64_MIN/INT64_MAX stream can never become
-// the stream's clock (and no later stamp difference can overflow).
-constexpr int64_t kMaxPlausibleStamp_us = 100'000'000'000'000'000;
-
-StampVerdict judge_stamp(StampGuard& guard, int64_t stamp_utime, int64_t host_utime) {
-  if (stamp_utime <= 0) return StampVerdict::kBehind;
-  if (stamp_utime > kMaxPlausibleStamp_us) return StampVerdict::kAhead;
-  return guard.check(stamp_utime, host_utime);
-}
-
 const char* odometry_stamp_counter(StampVerdict v) {
   switch (v) {
     case StampVerdict::kAhead:
@@ -143,7 +132,7 @@ bool FusionNode::odometry_acceptable(const OdometrySample& sample, int64_t host_
                                                         sample.utime, to_string(problem)));
     return false;
   }
-  const StampVerdict verdict = judge_stamp(odometry_stamps_, sample.utime, host_utime);
+  const StampVerdict verdict = odometry_stamps_.check(sample.utime, host_utime);
   if (!stamp_accepted(verdict)) {
     reject(odometry_stamp_counter(verdict),
            fmt::format("ODOMETRY at utime {} refused: stamp {} ({} us from the stream's clock)", sample.utime,
@@ -219,7 +208,7 @@ const FusionOutput* FusionNode::on_odometry(const OdometrySample& sample, int64_
 
 bool FusionNode::fix_acceptable(const LaserFixInput& input, int64_t host_utime) {
   // Every LASER_POSE, with or without a pose, is one message of the solver's stream.
-  const StampVerdict verdict = judge_stamp(fix_stamps_, input.utime, host_utime);
+  const StampVerdict verdict = fix_stamps_.check(input.utime, host_utime);
   if (!stamp_accepted(verdict)) {
     reject(fix_stamp_counter(verdict),
            fmt::format("LASER_POSE at utime {} refused: stamp {} ({} us from the stream's clock)",
