@@ -29,6 +29,11 @@ laser_scan_t to_lcm(const LaserScan& scan) {
 bool from_lcm(const laser_scan_t& msg, LaserScan& out) {
   if (msg.nrssi != 0 && msg.nrssi != msg.nranges) return false;
   if (!(msg.angle_increment != 0.0f) || msg.time_increment < 0.0f) return false;
+  copy_from_lcm(msg, out);
+  return true;
+}
+
+void copy_from_lcm(const laser_scan_t& msg, LaserScan& out) {
   out.utime = msg.utime;
   out.receive_utime = msg.receive_utime;
   out.sensor_start_us = msg.sensor_start_us;
@@ -46,7 +51,6 @@ bool from_lcm(const laser_scan_t& msg, LaserScan& out) {
   out.ranges = msg.ranges;
   out.rssi = msg.rssi;
   out.rssi_bits = msg.rssi_bits;
-  return true;
 }
 
 reflector_t to_lcm(const ReflectorDetection& d) {

@@ -16,6 +16,8 @@ laser_scan_t to_lcm(const LaserScan& scan);
 /// Returns false (leaving out untouched) when the message is inconsistent
 /// (nrssi neither 0 nor nranges, non-positive increment).
 bool from_lcm(const laser_scan_t& msg, LaserScan& out);
+/// Every field as it came, judged by nobody (for a caller that judges the scan itself).
+void copy_from_lcm(const laser_scan_t& msg, LaserScan& out);
 
 reflector_t to_lcm(const ReflectorDetection& detection);
 ReflectorDetection from_lcm(const reflector_t& msg);

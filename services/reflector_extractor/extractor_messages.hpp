@@ -23,25 +23,7 @@ inline OdometrySample odometry_twist_from_message(const odometry_t& msg) {
 
 /// LMS100_SCAN as it came, judged by nobody here: every check is ExtractorNode's
 /// (check_scan), so a broken header is counted by its reason like any other fault.
-inline void scan_from_message(const laser_scan_t& msg, LaserScan& out) {
-  out.utime = msg.utime;
-  out.receive_utime = msg.receive_utime;
-  out.sensor_start_us = msg.sensor_start_us;
-  out.sensor_transmit_us = msg.sensor_transmit_us;
-  out.scan_counter = static_cast<uint32_t>(msg.scan_counter);
-  out.telegram_counter = static_cast<uint32_t>(msg.telegram_counter);
-  out.device_status = static_cast<uint32_t>(msg.device_status);
-  out.serial_number = static_cast<uint32_t>(msg.serial_number);
-  out.start_angle = msg.start_angle;
-  out.angle_increment = msg.angle_increment;
-  out.time_increment = msg.time_increment;
-  out.scan_period = msg.scan_period;
-  out.range_min = msg.range_min;
-  out.range_max = msg.range_max;
-  out.ranges = msg.ranges;
-  out.rssi = msg.rssi;
-  out.rssi_bits = msg.rssi_bits;
-}
+inline void scan_from_message(const laser_scan_t& msg, LaserScan& out) { copy_from_lcm(msg, out); }
 
 /// REFLECTORS for one scan.
 inline void to_message(const ExtractorOutput& o, reflector_detections_t& out) {
