@@ -14,8 +14,10 @@ build_dir="${BUILD_DIR:-build-test}"
 jobs="${JOBS:-$(nproc)}"
 # Benchmarks are not run by ctest and their numbers mean nothing under sanitizers:
 # deploy/demo.sh builds them (Release) instead, which keeps CI within its time.
-cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Debug -DREFLOC_WERROR=ON -DREFLOC_SANITIZE=ON \
-  -DREFLOC_BUILD_BENCHMARKS=OFF
+# -g1 (line tables, no variable info): sanitizer reports still name file:line, and the
+# compile is a third faster than with -g on CI's 2 cores.
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-g1 -DREFLOC_WERROR=ON \
+  -DREFLOC_SANITIZE=ON -DREFLOC_BUILD_BENCHMARKS=OFF
 cmake --build "$build_dir" -j "$jobs"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
