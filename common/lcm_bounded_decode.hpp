@@ -19,16 +19,30 @@ namespace refloc {
 /// The outcome of one bounded decode; reason says why the bytes were refused.
 struct LcmDecodeResult {
   bool ok = false;
+  bool non_finite = false;  ///< well-formed, refused for a NaN/inf number (LcmNumbers::kFiniteOnly)
   std::string reason;
 };
+
+/// kFiniteOnly: what a service consumes (ServiceRuntime::subscribe); kAsSent: what a tool
+/// reading a log must show as it was, NaN included.
+enum class LcmNumbers { kAsSent, kFiniteOnly };
 
 /// Check, then decode data into message. Never throws and never lets a declared length
 /// allocate more than the type's limits allow; message is unspecified when !ok.
 template <class Message>
-LcmDecodeResult decode_lcm_bounded(const void* data, size_t size, Message& message) {
+LcmDecodeResult decode_lcm_bounded(const void* data, size_t size, Message& message,
+                                   LcmNumbers numbers = LcmNumbers::kAsSent) {
   LcmDecodeResult result;
-  result.reason = check_lcm_datagram(lcm_schema_of<Message>(), static_cast<const uint8_t*>(data), size);
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  result.reason = check_lcm_datagram(lcm_schema_of<Message>(), bytes, size);
   if (!result.reason.empty()) return result;
+  if (numbers == LcmNumbers::kFiniteOnly) {
+    result.reason = find_non_finite_lcm_number(lcm_schema_of<Message>(), bytes, size);
+    if (!result.reason.empty()) {
+      result.non_finite = true;
+      return result;
+    }
+  }
   try {
     if (message.decode(data, 0, static_cast<int>(size)) < 0) {
       result.reason = "lcm-gen's decoder refused what the bounds check accepted";

@@ -41,9 +41,27 @@ int64_t read_signed(const uint8_t* p, int64_t bytes) {
   return static_cast<int64_t>(v << shift) >> shift;
 }
 
+/// Whether an IEEE-754 number, big-endian as LCM writes it, is NaN or infinite: its exponent
+/// bits are all ones. Reads the bits, so a signalling NaN raises nothing.
+bool is_non_finite(const uint8_t* p, LcmFieldKind kind) {
+  if (kind == LcmFieldKind::kFloat) return (p[0] & 0x7F) == 0x7F && (p[1] & 0x80) == 0x80;
+  return (p[0] & 0x7F) == 0x7F && (p[1] & 0xF0) == 0xF0;
+}
+
+const char* non_finite_name(const uint8_t* p, LcmFieldKind kind) {
+  const bool mantissa_zero =
+      kind == LcmFieldKind::kFloat
+          ? (p[1] & 0x7F) == 0 && p[2] == 0 && p[3] == 0
+          : (p[1] & 0x0F) == 0 && p[2] == 0 && p[3] == 0 && p[4] == 0 && p[5] == 0 && p[6] == 0 && p[7] == 0;
+  if (!mantissa_zero) return "NaN";
+  return (p[0] & 0x80) != 0 ? "-inf" : "inf";
+}
+
 class DatagramWalk {
  public:
-  DatagramWalk(const uint8_t* data, size_t size) : data_(data), size_(static_cast<int64_t>(size)) {}
+  /// finite_only: a NaN or infinite float/double is a lie too (reason "<field> is NaN").
+  DatagramWalk(const uint8_t* data, size_t size, bool finite_only)
+      : data_(data), size_(static_cast<int64_t>(size)), finite_only_(finite_only) {}
 
   int64_t left() const { return size_ - pos_; }
   int64_t pos() const { return pos_; }
@@ -76,14 +94,17 @@ class DatagramWalk {
                                                          field.name, count * bytes, left());
           return false;
         }
-        if (field.fixed_count == 1 && field.kind != LcmFieldKind::kFloat &&
-            field.kind != LcmFieldKind::kDouble)
-          integer_values[i] = read_signed(here(), bytes);
+        const bool is_real = field.kind == LcmFieldKind::kFloat || field.kind == LcmFieldKind::kDouble;
+        if (field.fixed_count == 1 && !is_real) integer_values[i] = read_signed(here(), bytes);
+        if (is_real && finite_only_ && !all_finite(field, count, reason)) return false;
         skip(count * bytes);
       }
     }
     return true;
   }
+
+  /// Whether the walk stopped at a NaN or infinite number (finite_only).
+  bool found_non_finite() const { return found_non_finite_; }
 
  private:
   bool variable_count(const LcmSchema& schema, const LcmFieldSchema& field,
@@ -106,6 +127,20 @@ class DatagramWalk {
     if (count * least > left()) {
       reason = fmt::format("{} = {} declared, {}[] needs at least {} bytes, {} left", length_name, count,
                            field.name, count * least, left());
+      return false;
+    }
+    return true;
+  }
+
+  bool all_finite(const LcmFieldSchema& field, int64_t count, std::string& reason) {
+    const int64_t bytes = element_bytes(field.kind);
+    for (int64_t k = 0; k < count; ++k) {
+      const uint8_t* p = here() + k * bytes;
+      if (!is_non_finite(p, field.kind)) continue;
+      const bool scalar = field.fixed_count == 1 && field.length_field < 0;
+      reason = scalar ? fmt::format("{} is {}", field.name, non_finite_name(p, field.kind))
+                      : fmt::format("{}[{}] is {}", field.name, k, non_finite_name(p, field.kind));
+      found_non_finite_ = true;
       return false;
     }
     return true;
@@ -163,10 +198,22 @@ class DatagramWalk {
 
   const uint8_t* data_;
   int64_t size_;
+  bool finite_only_;
+  bool found_non_finite_ = false;
   int64_t pos_ = 0;
 };
 
 }  // namespace
+
+std::string find_non_finite_lcm_number(const LcmSchema& schema, const uint8_t* data, size_t size) {
+  constexpr size_t kFingerprintBytes = 8;
+  if (size < kFingerprintBytes) return {};
+  DatagramWalk walk(data + kFingerprintBytes, size - kFingerprintBytes, true);
+  std::string reason;
+  // A structural lie is check_lcm_datagram's to report; only a number's is returned here.
+  if (!walk.walk_struct(schema, reason) && walk.found_non_finite()) return reason;
+  return {};
+}
 
 std::string check_lcm_datagram(const LcmSchema& schema, const uint8_t* data, size_t size) {
   constexpr size_t kFingerprintBytes = 8;
@@ -177,7 +224,7 @@ std::string check_lcm_datagram(const LcmSchema& schema, const uint8_t* data, siz
   if (fingerprint != schema.fingerprint)
     return fmt::format("fingerprint {:016x} is not {}'s {:016x}", fingerprint, schema.type_name,
                        schema.fingerprint);
-  DatagramWalk walk(data + kFingerprintBytes, size - kFingerprintBytes);
+  DatagramWalk walk(data + kFingerprintBytes, size - kFingerprintBytes, false);
   std::string reason;
   if (!walk.walk_struct(schema, reason)) return reason;
   if (walk.left() != 0) return fmt::format("{} bytes after the end of the {}", walk.left(), schema.type_name);

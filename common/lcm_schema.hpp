@@ -58,4 +58,10 @@ const LcmSchema& lcm_schema_of();
 /// only for the reason; reads at most size bytes.
 std::string check_lcm_datagram(const LcmSchema& schema, const uint8_t* data, size_t size);
 
+/// The first NaN or infinite float/double of a datagram check_lcm_datagram accepted, as
+/// "covariance[3] is NaN" (nested: "reflectors[2].range is inf"); empty when every number is
+/// finite. No refloc message carries a non-finite number on purpose (none is a sentinel), so a
+/// service refuses such a message whole before any field of it is used.
+std::string find_non_finite_lcm_number(const LcmSchema& schema, const uint8_t* data, size_t size);
+
 }  // namespace refloc

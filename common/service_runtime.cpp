@@ -12,6 +12,7 @@
 
 #include <unistd.h>
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -189,6 +190,13 @@ int ServiceRuntime::run() {
 void ServiceRuntime::watch_heartbeats_for_duplicates() {
   // Raw, not subscribe(): heartbeats are not the service's input (messages_in, p50/p99).
   lcm_->subscribeFunction("HEARTBEAT", &ServiceRuntime::on_heartbeat_heard, this);
+}
+
+std::string ServiceRuntime::non_finite_counter_name(const std::string& channel) {
+  std::string name = "nonfinite_" + channel;
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return name;
 }
 
 void ServiceRuntime::on_heartbeat_heard(const lcm::ReceiveBuffer* rbuf, const std::string&,
