@@ -75,7 +75,7 @@ class ScanCounterGaps {
   int64_t stride_ = 0;  ///< 0 until the first advance
 };
 
-/// Stamp limits for a stream another service of the chain publishes (REFLECTORS,
+/// Stamp limits for a stream another service of the chain publishes (LMS100_SCAN, REFLECTORS,
 /// REFLECTOR_MATCHES, POSE): its stamps are scan or odometry times, and the time from
 /// there to our handler includes the upstream service's processing, which varies by far
 /// more than the default 0.1 s (a cold-started matcher's first global relocalization, a

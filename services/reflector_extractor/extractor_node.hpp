@@ -78,7 +78,8 @@ class ExtractorNode {
  private:
   ReflectorExtractor extractor_;
   MotionCompensator compensator_;
-  InputStreamChecks scan_checks_{"scan"};
+  // 1 s too: 0.1 s refused 150 good scans of a loaded hostile-bus run (issue 11).
+  InputStreamChecks scan_checks_{"scan", chain_stream_stamp_limits()};
   InputStreamChecks odometry_checks_{"odometry", chain_stream_stamp_limits()};  // from mecanum_odometry
   std::vector<NodeEvent> odometry_events_;
   ExtractorOutput output_;
