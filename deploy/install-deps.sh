@@ -11,6 +11,7 @@ packages=(
   default-jdk-headless libjchart2d-java
   supervisor iproute2 util-linux procps python3 jq
   clang-format git
+  libceres-dev
 )
 
 # Every refloc program's LCM URL asks for this UDP receive buffer (recv_buf_size, common/lcm_url.hpp:

@@ -1,0 +1,66 @@
+#include "odometry_command.hpp"
+
+#include "common/json_config.hpp"
+#include "common/robot_config.hpp"
+#include "odometry_calibration.hpp"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+
+namespace refloc {
+
+int run_odometry_calibration(const OdometryCommandOptions& o) {
+  const RobotConfig robot = load_robot_config(o.robot_path);
+  CalibrationLogCounts counts;
+  CalibrationDrive drive = read_calibration_log(o.log_path, o.channels, counts);
+  fmt::print("{}: {} {}, {} {} OK ({} not OK, unused), {} undecodable\n", o.log_path, counts.encoders,
+             o.channels.encoders, counts.laser_fixes_ok, o.channels.laser_pose, counts.laser_fixes_not_ok,
+             counts.undecodable);
+  if (o.robot_T_laser) {
+    // LASER_POSE = map_T_laser * configured^-1; re-read it with the given mount.
+    const Pose2 correction = robot.robot_T_laser * o.robot_T_laser->inverse();
+    for (TimedPose& fix : drive.laser_fixes) fix = compose_mount(fix, correction);
+  }
+  const std::vector<OdometryWindow> windows = odometry_windows(drive, robot, o.windows);
+  OdometryCalibrationOptions options;
+  options.odometry_noise = robot.odometry_noise;
+  const OdometryCalibrationResult r = calibrate_odometry(windows, options);
+  fmt::print("{} windows; turned {:.2f} rad, drove {:.2f} m\n", r.windows, r.total_rotation_rad,
+             r.total_translation_m);
+  if (!r.ok) {
+    fmt::print(stderr, "refloc-calibrate-odometry: no calibration: {}\n", r.message);
+    return 1;
+  }
+  const double sr = std::sqrt(r.covariance(0, 0)), sk = std::sqrt(r.covariance(1, 1));
+  const RobotConfig fixed = corrected_robot(robot, r.radius_scale, r.geometry_scale);
+  fmt::print("1 sigma from the least-squares covariance x max(1, chi2/dof):\n");
+  fmt::print("  wheel radius scale = {:.5f} +- {:.5f} ({:+.3f} %)\n", r.radius_scale, sr,
+             (r.radius_scale - 1.0) * 100.0);
+  fmt::print("  (lx + ly) scale    = {:.5f} +- {:.5f} ({:+.3f} %)\n", r.geometry_scale, sk,
+             (r.geometry_scale - 1.0) * 100.0);
+  fmt::print("chi2/dof = {:.3f}; {}\n", r.chi2_per_dof, r.message);
+  fmt::print("robot.json (only lx + ly is observable; lx, ly keep their ratio):\n");
+  fmt::print(
+      "  \"wheel_radius_m\": {:.6f},\n  \"half_wheelbase_lx_m\": {:.6f},\n  \"half_track_ly_m\": {:.6f},\n",
+      fixed.wheel_radius, fixed.half_wheelbase_lx, fixed.half_track_ly);
+  if (!o.json_path.empty()) {
+    const nlohmann::json j = {{"radius_scale", r.radius_scale},
+                              {"sigma_radius_scale", sr},
+                              {"geometry_scale", r.geometry_scale},
+                              {"sigma_geometry_scale", sk},
+                              {"wheel_radius_m", fixed.wheel_radius},
+                              {"half_wheelbase_lx_m", fixed.half_wheelbase_lx},
+                              {"half_track_ly_m", fixed.half_track_ly},
+                              {"chi2_per_dof", r.chi2_per_dof},
+                              {"windows", r.windows}};
+    std::ofstream out(o.json_path);
+    out << j.dump(2) << "\n";
+    if (!out) throw ConfigError(o.json_path + ": cannot write");
+  }
+  return 0;
+}
+
+}  // namespace refloc

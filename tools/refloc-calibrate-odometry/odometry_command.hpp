@@ -1,0 +1,26 @@
+#pragma once
+// refloc-calibrate-odometry's work: read the drive from a log, solve the wheel radius and
+// (lx + ly) scales, print them and the corrected robot.json values.
+
+#include "calibration_log.hpp"
+
+#include <optional>
+#include <string>
+
+namespace refloc {
+
+struct OdometryCommandOptions {
+  std::string log_path;
+  std::string robot_path = "deploy/config/robot.json";  ///< the robot file the services ran with
+  std::string json_path;                                ///< also write the result here
+  /// The mount to read LASER_POSE with, when it differs from the robot file's (e.g. the output
+  /// of refloc-calibrate-mount on the same drive); LASER_POSE was computed with the file's.
+  std::optional<Pose2> robot_T_laser;
+  CalibrationChannels channels;
+  WindowOptions windows;
+};
+
+/// Returns the exit code: 0 solved, 1 the drive does not determine the scales, 2 bad input.
+int run_odometry_calibration(const OdometryCommandOptions& o);
+
+}  // namespace refloc
