@@ -4,12 +4,12 @@
 
 namespace refloc {
 
-double rssi_to_8bit(int32_t raw, int rssi_bits) {
+double rssi_to_8bit(int32_t raw, int rssi_bits, RssiScale scale) {
   const double value = static_cast<double>(raw);
-  return rssi_bits == 8 ? value : value / 257.0;
+  return rssi_bits == 8 || scale == RssiScale::k8bitIn16bit ? value : value / 257.0;
 }
 
-void make_beam_table(const LaserScan& scan, BeamTable& table) {
+void make_beam_table(const LaserScan& scan, BeamTable& table, RssiScale scale) {
   const size_t n = scan.ranges.size();
   // Beam directions change only with the scan geometry: the trigonometry is skipped otherwise.
   const bool same_geometry = table.beams.size() == n && table.start_angle == scan.start_angle &&
@@ -35,7 +35,7 @@ void make_beam_table(const LaserScan& scan, BeamTable& table) {
       b.direction = Eigen::Vector2d(std::cos(angle), std::sin(angle));
     }
     b.point = b.range * b.direction;
-    b.rssi_8bit = table.has_rssi ? rssi_to_8bit(scan.rssi[i], scan.rssi_bits) : 0.0;
+    b.rssi_8bit = table.has_rssi ? rssi_to_8bit(scan.rssi[i], scan.rssi_bits, scale) : 0.0;
   }
 }
 

@@ -5,6 +5,7 @@
 // sentinel ranges (0, 0.001) or the sensor's RSSI width.
 
 #include "common/laser_scan.hpp"
+#include "reflector_extractor/rssi_scale.hpp"
 
 #include <Eigen/Core>
 
@@ -26,7 +27,7 @@ struct TableBeam {
   double range = 0.0;                                    ///< [m], as reported
   Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  ///< unit vector of the beam, laser frame
   Eigen::Vector2d point = Eigen::Vector2d::Zero();       ///< range * direction [m]
-  double rssi_8bit = 0.0;  ///< energy on the 8-bit scale (16-bit / 257); 0 without RSSI
+  double rssi_8bit = 0.0;  ///< energy on the 8-bit scale (16-bit / 257 unless read as 8-bit); 0 without RSSI
 };
 
 struct BeamTable {
@@ -45,10 +46,12 @@ struct BeamTable {
   }
 };
 
-/// RSSI as reported, on the 8-bit scale: 65535 / 255 = 257 maps full scale onto full scale.
-double rssi_to_8bit(int32_t raw, int rssi_bits);
+/// RSSI as reported, on the 8-bit scale: 65535 / 255 = 257 maps full scale onto full scale;
+/// k8bitIn16bit: the 16-bit channel holds 8-bit values, used as they are.
+double rssi_to_8bit(int32_t raw, int rssi_bits, RssiScale scale = RssiScale::kNative);
 
-/// Fill table from scan (its storage reused: no allocation once grown to the largest scan).
-void make_beam_table(const LaserScan& scan, BeamTable& table);
+/// Fill table from scan (its storage reused: no allocation once grown to the largest scan),
+/// reading a 16-bit RSSI channel on scale (RssiScaleDetector's verdict).
+void make_beam_table(const LaserScan& scan, BeamTable& table, RssiScale scale = RssiScale::kNative);
 
 }  // namespace refloc

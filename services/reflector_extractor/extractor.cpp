@@ -24,8 +24,9 @@ ReflectorExtractor::ReflectorExtractor(ExtractorConfig config)
   beam_rssi_.reserve(128);
 }
 
-const std::vector<ReflectorDetection>& ReflectorExtractor::extract(const LaserScan& scan) {
-  make_beam_table(scan, table_);
+const std::vector<ReflectorDetection>& ReflectorExtractor::extract(const LaserScan& scan,
+                                                                   RssiScale rssi_scale) {
+  make_beam_table(scan, table_, rssi_scale);
   return extract(table_);
 }
 

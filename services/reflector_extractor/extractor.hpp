@@ -71,9 +71,11 @@ class ReflectorExtractor {
  public:
   explicit ReflectorExtractor(ExtractorConfig config = {});
 
-  /// Detections in scan, in beam order; the reference stays valid until the next call.
-  /// No allocation once the internal buffers have grown to the largest scan seen.
-  const std::vector<ReflectorDetection>& extract(const LaserScan& scan);
+  /// Detections in scan (a 16-bit RSSI channel read on rssi_scale), in beam order; the
+  /// reference stays valid until the next call. No allocation once the internal buffers have
+  /// grown to the largest scan seen.
+  const std::vector<ReflectorDetection>& extract(const LaserScan& scan,
+                                                 RssiScale rssi_scale = RssiScale::kNative);
   /// The same from a scan already read into a beam table.
   const std::vector<ReflectorDetection>& extract(const BeamTable& table);
 

@@ -23,6 +23,13 @@ ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& c) {
   out.motion_compensation = c.boolean("/motion_compensation", out.motion_compensation);
   out.odometry_max_age = c.number("/odometry_max_age_s", out.odometry_max_age, 0.0, 10.0);
 
+  const std::string scale = c.choice("/rssi_scale", "auto", {"auto", "native", "8bit_in_16bit"});
+  out.rssi_scale.mode = scale == "auto"     ? RssiScaleConfig::Mode::kAuto
+                        : scale == "native" ? RssiScaleConfig::Mode::kNative
+                                            : RssiScaleConfig::Mode::k8bitIn16bit;
+  out.no_reflector_timeout = c.positive_number("/no_reflector_timeout_s", out.no_reflector_timeout, 3600.0,
+                                               "0 would degrade the state on every scan without a reflector");
+
   e.energy_threshold_8bit = c.number("/energy_threshold_8bit", e.energy_threshold_8bit, 0.0, 255.0);
   e.reflector_radius = c.number("/reflector_radius_m", e.reflector_radius, 0.005, 1.0);
   e.min_beams = static_cast<int>(c.integer("/min_beams", e.min_beams, 1, 1000));

@@ -4,6 +4,7 @@
 // ExtractorConfig::paper() when "mode" is "paper"); values are range-checked.
 
 #include "reflector_extractor/extractor.hpp"
+#include "reflector_extractor/rssi_scale.hpp"
 
 #include <string>
 
@@ -19,6 +20,10 @@ struct ExtractorServiceConfig {
   bool motion_compensation = true;
   /// Odometry older than this (by message utime, relative to the scan) is not used [s].
   double odometry_max_age = 0.2;
+  /// How a 16-bit RSSI channel is read ("rssi_scale": auto / native / 8bit_in_16bit).
+  RssiScaleConfig rssi_scale;
+  /// Accepted scans without any reflector for longer than this degrade the state [s].
+  double no_reflector_timeout = 2.0;
 };
 
 /// Read the service config from a loaded document (the caller rejects unknown keys).

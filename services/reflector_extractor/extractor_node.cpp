@@ -6,7 +6,9 @@ namespace refloc {
 
 ExtractorNode::ExtractorNode(const ExtractorServiceConfig& config, const Pose2& robot_T_laser)
     : extractor_(config.extractor),
-      compensator_(config.motion_compensation, config.odometry_max_age, robot_T_laser) {
+      compensator_(config.motion_compensation, config.odometry_max_age, robot_T_laser),
+      rssi_scale_(config.rssi_scale),
+      no_reflector_(config.no_reflector_timeout, config.extractor.energy_threshold_8bit) {
   output_.detections.reserve(64);
 }
 
@@ -35,8 +37,12 @@ const ExtractorOutput& ExtractorNode::on_scan(const LaserScan& scan, int64_t hos
   output_.missing_scans = scan_checks_.missing_before(scan.scan_counter, scan.utime, output_.events);
   output_.utime = scan.utime;
   output_.scan_counter = scan.scan_counter;
-  output_.detections = extractor_.extract(scan);  // copy into reused storage
+  rssi_scale_.observe(scan, output_.events);
+  rssi_scale_was_8bit_ = rssi_scale_was_8bit_ || rssi_scale_.scale() == RssiScale::k8bitIn16bit;
+  make_beam_table(scan, table_, rssi_scale_.scale());
+  output_.detections = extractor_.extract(table_);  // copy into reused storage
   output_.stats = extractor_.stats();
+  no_reflector_.observe(table_, output_.stats, output_.detections.size(), host_utime, output_.events);
   output_.compensation = compensator_.apply(output_.detections, scan.utime);
   return output_;
 }
@@ -46,7 +52,13 @@ ExtractorHealth ExtractorNode::health(int64_t messages_in, int64_t host_utime,
   if (messages_in == 0) return {ExtractorHealth::State::kStarting, "waiting for " + input_channel};
   if (scan_checks_.starved(host_utime))
     return {ExtractorHealth::State::kDegraded, scan_checks_.starved_detail(host_utime)};
-  return {ExtractorHealth::State::kOk, ""};
+  ExtractorHealth h{ExtractorHealth::State::kOk, rssi_scale_.detail()};
+  if (rssi_scale_was_8bit_) h.rssi_scale_8bit = rssi_scale_.scale() == RssiScale::k8bitIn16bit ? 1 : 0;
+  if (no_reflector_.firing()) {
+    h.state = ExtractorHealth::State::kDegraded;
+    h.detail = no_reflector_.detail() + (h.detail.empty() ? "" : "; " + h.detail);
+  }
+  return h;
 }
 
 }  // namespace refloc

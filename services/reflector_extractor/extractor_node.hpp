@@ -10,6 +10,8 @@
 #include "reflector_extractor/extractor.hpp"
 #include "reflector_extractor/extractor_config_file.hpp"
 #include "reflector_extractor/motion_compensator.hpp"
+#include "reflector_extractor/no_reflector_watch.hpp"
+#include "reflector_extractor/rssi_scale.hpp"
 
 #include <cstdint>
 #include <string>
@@ -45,11 +47,16 @@ struct ExtractorOutput {
 };
 
 /// The heartbeat state: STARTING until any message came in; DEGRADED while scans come but
-/// none was usable for over a second; else OK.
+/// none was usable for over a second, or while usable scans brought no reflector for over
+/// no_reflector_timeout_s (the reason in detail); else OK. detail also names an RSSI scale
+/// read as 8-bit in the 16-bit channel.
 struct ExtractorHealth {
   enum class State { kStarting, kOk, kDegraded };
   State state = State::kStarting;
   std::string detail;
+  /// Heartbeat gauge rssi_scale_8bit: 1 while the 16-bit channel is read as 8-bit, 0 after a
+  /// switch back; -1 (not shown) until it was ever read so.
+  int rssi_scale_8bit = -1;
 };
 
 class ExtractorNode {
@@ -74,10 +81,16 @@ class ExtractorNode {
   ExtractorHealth health(int64_t messages_in, int64_t host_utime, const std::string& input_channel) const;
 
   const ReflectorExtractor& extractor() const { return extractor_; }
+  /// How the 16-bit RSSI channel is read now.
+  RssiScale rssi_scale() const { return rssi_scale_.scale(); }
 
  private:
   ReflectorExtractor extractor_;
   MotionCompensator compensator_;
+  RssiScaleDetector rssi_scale_;
+  NoReflectorWatch no_reflector_;
+  bool rssi_scale_was_8bit_ = false;
+  BeamTable table_;
   // 1 s too: 0.1 s refused 150 good scans of a loaded hostile-bus run (issue 11).
   InputStreamChecks scan_checks_{"scan", chain_stream_stamp_limits()};
   InputStreamChecks odometry_checks_{"odometry", chain_stream_stamp_limits()};  // from mecanum_odometry

@@ -57,6 +57,7 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     constexpr int8_t kState[] = {heartbeat_t::STATE_STARTING, heartbeat_t::STATE_OK,
                                  heartbeat_t::STATE_DEGRADED};  // in ExtractorHealth::State order
     runtime.set_state(kState[static_cast<int>(h.state)], h.detail);
+    if (h.rssi_scale_8bit >= 0) runtime.counter("rssi_scale_8bit") = h.rssi_scale_8bit;  // a gauge
   });
   return runtime.run();
 }

@@ -25,6 +25,8 @@ TEST(ExtractorConfigFile, DeployedFileIsValidAndEqualsTheCodeDefaults) {
   EXPECT_DOUBLE_EQ(c.extractor.fit.min_incidence_cos, defaults.fit.min_incidence_cos);
   EXPECT_DOUBLE_EQ(c.extractor.roundness.flat_chi2_margin, defaults.roundness.flat_chi2_margin);
   EXPECT_TRUE(c.motion_compensation);
+  EXPECT_EQ(c.rssi_scale.mode, RssiScaleConfig::Mode::kAuto);
+  EXPECT_DOUBLE_EQ(c.no_reflector_timeout, ExtractorServiceConfig{}.no_reflector_timeout);
   EXPECT_EQ(c.input_channel, "LMS100_SCAN");
   EXPECT_EQ(c.output_channel, "REFLECTORS");
 }
@@ -47,6 +49,19 @@ TEST(ExtractorConfigFile, OutOfRangeValueNamesItsPointer) {
     EXPECT_NE(std::string(e.what()).find("x.json: /default/fit/min_incidence_cos"), std::string::npos)
         << e.what();
   }
+}
+
+TEST(ExtractorConfigFile, RssiScaleAndNoReflectorTimeoutAreRead) {
+  const JsonConfig file(nlohmann::json{{"rssi_scale", "8bit_in_16bit"}, {"no_reflector_timeout_s", 5.0}},
+                        "t");
+  const ExtractorServiceConfig c = parse_extractor_service_config(file);
+  EXPECT_EQ(c.rssi_scale.mode, RssiScaleConfig::Mode::k8bitIn16bit);
+  EXPECT_DOUBLE_EQ(c.no_reflector_timeout, 5.0);
+  EXPECT_THROW(parse_extractor_service_config(JsonConfig(nlohmann::json{{"rssi_scale", "12bit"}}, "t")),
+               ConfigError);
+  EXPECT_THROW(
+      parse_extractor_service_config(JsonConfig(nlohmann::json{{"no_reflector_timeout_s", 0.0}}, "t")),
+      ConfigError);
 }
 
 TEST(ExtractorConfigFile, UnknownModeIsRejected) {
