@@ -43,6 +43,9 @@ LaserFix make_laser_fix(int64_t utime, MatchVerdict verdict, const PoseSolution&
   fix.covariance = solution.covariance;
   fix.reflectors_used = solution.reflectors_used;
   fix.residual = solution.rms_residual;
+  fix.range_bias_use = solution.range_bias_use;
+  fix.range_bias = solution.range_bias;
+  fix.range_bias_sigma = solution.range_bias_sigma;
   if (solution.reflectors_used < matches) fix.outlier_matches = matches - solution.reflectors_used;
   return fix;
 }

@@ -32,6 +32,10 @@ struct LaserFix {
   /// The solver's pose or covariance was not finite or not a usable covariance (variance
   /// above kMaxFixVariance, not symmetric PSD): no pose, status LOST, never published as is.
   bool unusable_solution = false;
+  /// The range offset b this fix took off (PoseSolution's); with a pose only.
+  RangeBiasUse range_bias_use = RangeBiasUse::kNoSolution;
+  double range_bias = 0.0;        ///< [m]
+  double range_bias_sigma = 0.0;  ///< [m]
 
   /// Calls bump(name, increment) for each heartbeat counter this fix touches.
   template <class Bump>
@@ -41,6 +45,21 @@ struct LaserFix {
     if (status == LaserFixStatus::kAmbiguous) bump("ambiguous_fixes", 1);
     if (outlier_matches > 0) bump("outlier_matches", outlier_matches);
     if (unusable_solution) bump("unusable_solutions", 1);
+    if (range_bias_unestimable()) bump("range_bias_unestimable_fixes", 1);
+  }
+  /// A pose whose scan could not estimate b although estimation is on: b held, covariance inflated.
+  bool range_bias_unestimable() const {
+    return has_pose &&
+           (range_bias_use == RangeBiasUse::kFewReflectors || range_bias_use == RangeBiasUse::kWeakGeometry);
+  }
+  /// Why b was not estimated, for the heartbeat detail of an OK state; empty when it was.
+  const char* range_bias_detail() const {
+    if (!has_pose) return "";
+    if (range_bias_use == RangeBiasUse::kFewReflectors)
+      return "range bias not estimable (too few reflectors): held, its sigma in the covariance";
+    if (range_bias_use == RangeBiasUse::kWeakGeometry)
+      return "range bias not estimable (reflectors not spread enough): held, its sigma in the covariance";
+    return "";
   }
   /// The heartbeat state after this fix: OK, else DEGRADED with this detail.
   bool ok() const { return status == LaserFixStatus::kOk; }

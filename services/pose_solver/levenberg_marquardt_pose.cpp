@@ -6,11 +6,10 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
 
-/// Residual and its Jacobian w.r.t. (x, y, theta) of map_T_robot.
-void residual_and_jacobian(const PointObservation& o, const Pose2& map_T_robot, const Pose2& robot_T_laser,
-                           Eigen::Vector2d& e, Eigen::Matrix<double, 2, 3>& j) {
+void observation_residual_and_jacobian(const PointObservation& o, const Pose2& map_T_robot,
+                                       const Pose2& robot_T_laser, Eigen::Vector2d& e,
+                                       Eigen::Matrix<double, 2, 3>& j) {
   const double c = std::cos(map_T_robot.theta), s = std::sin(map_T_robot.theta);
   Eigen::Matrix2d robot_R_map;
   robot_R_map << c, s, -s, c;
@@ -25,8 +24,6 @@ void residual_and_jacobian(const PointObservation& o, const Pose2& map_T_robot, 
   j.leftCols<2>() = laser_R_robot * robot_R_map;
   j.col(2) = -laser_R_robot * d_robot_R_map * delta;
 }
-
-}  // namespace
 
 Eigen::Vector2d predict_laser_point(const PointObservation& o, const Pose2& map_T_robot,
                                     const Pose2& robot_T_laser) {
@@ -46,7 +43,7 @@ Eigen::Matrix3d pose_information(const std::vector<PointObservation>& observatio
   Eigen::Matrix<double, 2, 3> j;
   for (size_t i = 0; i < observations.size(); ++i) {
     if (use && !(*use)[i]) continue;
-    residual_and_jacobian(observations[i], map_T_robot, robot_T_laser, e, j);
+    observation_residual_and_jacobian(observations[i], map_T_robot, robot_T_laser, e, j);
     h += j.transpose() * observations[i].information * j;
   }
   return h;
@@ -66,7 +63,7 @@ LevenbergMarquardtResult refine_pose(const std::vector<PointObservation>& observ
     if (g) g->setZero();
     for (size_t i = 0; i < observations.size(); ++i) {
       if (use && !(*use)[i]) continue;
-      residual_and_jacobian(observations[i], pose, robot_T_laser, e, j);
+      observation_residual_and_jacobian(observations[i], pose, robot_T_laser, e, j);
       const Eigen::Vector2d we = observations[i].information * e;
       cost += e.dot(we);
       if (h) *h += j.transpose() * observations[i].information * j;

@@ -27,6 +27,11 @@ LevenbergMarquardtResult refine_pose(const std::vector<PointObservation>& observ
                                      const Pose2& initial_map_T_robot, int max_iterations,
                                      double convergence_step);
 
+/// Residual e = laser_p - predicted and its Jacobian de/d(x, y, theta) of map_T_robot.
+void observation_residual_and_jacobian(const PointObservation& o, const Pose2& map_T_robot,
+                                       const Pose2& robot_T_laser, Eigen::Vector2d& e,
+                                       Eigen::Matrix<double, 2, 3>& j);
+
 /// Normalised residual sqrt(e^T W e) of one observation at map_T_robot.
 double normalised_residual(const PointObservation& o, const Pose2& map_T_robot, const Pose2& robot_T_laser);
 

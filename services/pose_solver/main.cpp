@@ -32,6 +32,10 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   spdlog::info("mode {}, laser mount ({:.3f} m, {:.3f} m, {:.4f} rad)",
                config.solver.mode == SolverMode::kPaper ? "paper" : "default", robot_T_laser.x,
                robot_T_laser.y, robot_T_laser.theta);
+  const RangeBiasConfig& bias = config.solver.range_bias;
+  spdlog::info("range bias {}: prior {:.1f} +- {:.1f} mm, drift {:.2f} mm/sqrt(s)",
+               bias.estimate ? "estimated" : "not estimated (its sigma inflates the covariance)",
+               1e3 * bias.prior_mean, 1e3 * bias.prior_sigma, 1e3 * bias.drift);
 
   ServiceRuntime runtime("pose_solver", lcm_url);
   std::vector<ReflectorDetection> detections;
@@ -44,9 +48,10 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
                         matches, now_utime());
     report_events(runtime, o.events);
     runtime.set_state(o.ok() ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED,
-                      o.ok() ? "" : o.degraded_detail());
+                      o.ok() ? o.ok_detail() : o.degraded_detail());
     if (!o.accepted) return;
     o.for_each_counter([&](const char* name, int64_t by) { runtime.counter(name) += by; });
+    o.for_each_gauge([&](const char* name, int64_t value) { runtime.counter(name) = value; });
     to_message(*o.fix, out);
     runtime.publish(config.output_channel, out);
   });

@@ -6,6 +6,7 @@
 
 #include "pose_solver/point_observation.hpp"
 #include "pose_solver/pose_solution.hpp"
+#include "pose_solver/range_bias_refinement.hpp"
 #include "pose_solver/solver_config.hpp"
 
 #include "common/reflector_detection.hpp"
@@ -24,18 +25,26 @@ class PoseSolver {
   void solve(const std::vector<ReflectorDetection>& detections, const std::vector<ReflectorMatch>& matches,
              PoseSolution& solution);
 
+  /// The range offset's prior for the next solves (default: the config's, RangeBiasFilter's
+  /// per scan in SolverNode).
+  void set_range_bias_prior(const RangeBiasPrior& prior) { range_bias_prior_ = prior; }
+  const RangeBiasPrior& range_bias_prior() const { return range_bias_prior_; }
+
   const SolverConfig& config() const { return config_; }
   const Pose2& robot_T_laser() const { return robot_T_laser_; }
 
  private:
   void solve_paper(PoseSolution& solution);
   void solve_default(PoseSolution& solution);
+  bool solve_biased(Pose2 estimate, PoseSolution& solution);
   void finish(PoseSolution& solution) const;
 
   SolverConfig config_;
   Pose2 robot_T_laser_;
+  RangeBiasPrior range_bias_prior_;
   std::vector<PointObservation> observations_;
-  std::vector<int> observation_match_;  ///< index into matches of each observation
+  std::vector<PointObservation> corrected_;  ///< observations_ with the scan's b taken off
+  std::vector<int> observation_match_;       ///< index into matches of each observation
   std::vector<char> use_;
 };
 

@@ -8,6 +8,18 @@ enum class SolverMode {
   kDefault,  ///< Levenberg-Marquardt on (x, y, theta) from the detections' 2D points and covariances
 };
 
+/// The LMS100's systematic range error (up to +-30 mm): a common offset b = measured - true
+/// range of every detection, estimated jointly with the pose when the geometry supports it and
+/// carried into the covariance when it does not (range_bias_filter.hpp, range_bias_refinement.hpp).
+struct RangeBiasConfig {
+  bool estimate = true;       ///< false: b fixed at prior_mean, its prior_sigma only inflates the covariance
+  double prior_mean = 0.0;    ///< [m] what b is believed to be before any scan
+  double prior_sigma = 0.03;  ///< [m] 1 sigma about prior_mean (the LMS100's data sheet: +-30 mm)
+  double drift = 2e-4;        ///< [m/sqrt(s)] random walk of b between scans (temperature, ageing)
+  int min_reflectors = 4;     ///< fewer used reflectors: b is not estimated from the scan
+  double max_scan_sigma = 0.02;  ///< [m] a scan whose data alone give b a larger sigma does not estimate it
+};
+
 struct SolverConfig {
   SolverMode mode = SolverMode::kDefault;
   int max_iterations = 30;
@@ -18,6 +30,7 @@ struct SolverConfig {
   double max_rms_residual_ok = 0.03;   ///< [m] RMS range residual above this gives DEGRADED
   double min_position_conditioning =
       1e-6;  ///< smallest eigenvalue ratio of the linear system; below is collinear
+  RangeBiasConfig range_bias;
 };
 
 }  // namespace refloc

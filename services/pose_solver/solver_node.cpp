@@ -44,13 +44,21 @@ const SolverOutput& SolverNode::on_message(int64_t utime, int64_t scan_counter, 
   }
   output_.missing_scans = match_checks_.missing_before(scan_counter, utime, output_.events);
   output_.fix = &on_matches(utime, verdict, detections, matches);
+  output_.range_bias = range_bias_.mean();
+  output_.range_bias_sigma = range_bias_.sigma();
   return output_;
 }
 
 const LaserFix& SolverNode::on_matches(int64_t utime, MatchVerdict verdict,
                                        const std::vector<ReflectorDetection>& detections,
                                        const std::vector<ReflectorMatch>& matches) {
-  if (verdict == MatchVerdict::kOk) solver_.solve(detections, matches, solution_);
+  if (verdict == MatchVerdict::kOk) {
+    solver_.set_range_bias_prior(range_bias_.prior_at(utime));
+    solver_.solve(detections, matches, solution_);
+    // Only an OK fix teaches b: a DEGRADED one may hold an outlier or a bad residual b would absorb.
+    if (solution_.status == SolveStatus::kOk && solution_.range_bias_use == RangeBiasUse::kEstimated)
+      range_bias_.update(solution_.range_bias, solution_.range_bias_sigma);
+  }
   fix_ = make_laser_fix(utime, verdict, solution_, static_cast<int>(matches.size()));
   return fix_;
 }

@@ -9,7 +9,9 @@
 #include "common/node_event.hpp"
 #include "pose_solver/laser_fix.hpp"
 #include "pose_solver/pose_solver.hpp"
+#include "pose_solver/range_bias_filter.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -37,6 +39,8 @@ struct SolverOutput {
   bool starved = false;
   std::string starved_detail;
   const LaserFix* fix = nullptr;  ///< the last accepted message's fix; null before any
+  double range_bias = 0.0;        ///< [m] the estimate kept across scans (RangeBiasFilter)
+  double range_bias_sigma = 0.0;  ///< [m] its sigma at the last scan
 
   template <class Bump>
   void for_each_counter(Bump&& bump) const {
@@ -44,6 +48,14 @@ struct SolverOutput {
     bump("gap_matches_messages", missing_scans);
     fix->for_each_counter(bump);
   }
+  /// Calls set(name, value) for each heartbeat counter that holds a value rather than a count.
+  template <class Set>
+  void for_each_gauge(Set&& set) const {
+    set("range_bias_um", static_cast<int64_t>(std::llround(1e6 * range_bias)));
+    set("range_bias_sigma_um", static_cast<int64_t>(std::llround(1e6 * range_bias_sigma)));
+  }
+  /// The heartbeat detail of an OK state: why the range bias was not estimated, or empty.
+  const char* ok_detail() const { return fix != nullptr ? fix->range_bias_detail() : ""; }
   /// The heartbeat state after this message: OK, else DEGRADED with this detail.
   bool ok() const { return !starved && fix != nullptr && fix->ok(); }
   const char* degraded_detail() const {
@@ -54,7 +66,8 @@ struct SolverOutput {
 
 class SolverNode {
  public:
-  SolverNode(const SolverConfig& config, const Pose2& robot_T_laser) : solver_(config, robot_T_laser) {}
+  SolverNode(const SolverConfig& config, const Pose2& robot_T_laser)
+      : solver_(config, robot_T_laser), range_bias_(config.range_bias) {}
 
   /// One REFLECTOR_MATCHES as the service gets it: the scan's utime and scan counter, the
   /// verdict, its matches as detections 0..n-1 (matches_from_message), at host wall-clock
@@ -78,10 +91,13 @@ class SolverNode {
   const PoseSolver& solver() const { return solver_; }
   /// The last scan's solution (stale when the verdict was not kOk).
   const PoseSolution& solution() const { return solution_; }
+  /// The range offset kept across scans: each OK fix that estimated it updates it.
+  const RangeBiasFilter& range_bias() const { return range_bias_; }
 
  private:
   PoseSolver solver_;
   PoseSolution solution_;
+  RangeBiasFilter range_bias_;
   LaserFix fix_;
   std::vector<ReflectorDetection> matched_detections_;
   std::vector<ReflectorMatch> matches_;
