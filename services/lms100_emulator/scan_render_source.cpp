@@ -35,9 +35,13 @@ ScanSource make_rendered_scan_source(std::shared_ptr<const World> world, PoseAtT
   };
   ScanRenderConfig render_config = config;
   render_config.rssi_bits = 16;  // converted per request
+  // A sensor with 8-bit values in its 16-bit channel: only the 16-bit requests carry the quirk.
+  const Lms100ErrorModel reporting = config.sensor;
+  render_config.sensor.rssi_scale = RssiScale::k16Bit;
   auto state = std::make_shared<State>(State{
       std::move(world), std::move(map_T_laser_at), ScanRenderer(render_config), std::mt19937_64(seed), {}});
-  return [state](const ScanRequest& request, std::vector<uint16_t>& dist_mm, std::vector<uint16_t>& rssi) {
+  return [state, reporting](const ScanRequest& request, std::vector<uint16_t>& dist_mm,
+                            std::vector<uint16_t>& rssi) {
     ScanGeometry g = state->renderer.config().geometry;
     g.num_beams = std::min<int>(request.num_beams, static_cast<int>(dist_mm.size()));
     g.start_angle = request.start_angle_rad;
@@ -53,6 +57,9 @@ ScanSource make_rendered_scan_source(std::shared_ptr<const World> world, PoseAtT
       return;
     }
     code_scan_for_wire(state->scan, request.rssi_bits, dist_mm, rssi);
+    if (request.rssi_bits == 16 && reporting.rssi_scale != RssiScale::k16Bit) {
+      for (uint16_t& value : rssi) value = static_cast<uint16_t>(reported_rssi16(reporting, value));
+    }
   };
 }
 

@@ -45,6 +45,25 @@ double metal_rssi(const Lms100ErrorModel& model, double remission, double cos_in
   return std::max(specular, diffuse_rssi(model, remission, cos_incidence, range));
 }
 
+const char* to_string(RssiScale scale) { return scale == RssiScale::k16Bit ? "16bit" : "8bit_in_16bit"; }
+
+double range_walk(const Lms100ErrorModel& model, double rssi) {
+  const double span = model.range_walk_rssi_bright - model.range_walk_rssi_weak;
+  const double t = span > 0.0 ? std::clamp((rssi - model.range_walk_rssi_weak) / span, 0.0, 1.0) : 1.0;
+  return model.range_walk_weak + (model.range_walk_bright - model.range_walk_weak) * t;
+}
+
+double systematic_range_error(const Lms100ErrorModel& model, double range, double rssi) {
+  return model.range_offset + range * model.range_scale_ppm * 1e-6 + range_walk(model, rssi);
+}
+
+double reported_rssi16(const Lms100ErrorModel& model, double rssi16) {
+  if (model.rssi_scale == RssiScale::k16Bit || rssi16 <= 0.0) return rssi16;
+  // The 8-bit scale's dazzle code is 255, as in the sensor's 8-bit channel.
+  if (rssi16 >= 65535.0) return 255.0;
+  return std::clamp(std::round(rssi16 / 257.0), 1.0, 254.0);
+}
+
 double range_sigma_for(const Lms100ErrorModel& model, double rssi) {
   if (model.rssi_per_decade <= 0.0) return model.range_sigma;
   const double weakness =
@@ -58,6 +77,12 @@ Lms100ErrorModel parse_lms100_error_model(const JsonConfig& config, const std::s
   m.weak_echo_sigma_factor =
       config.number(p + "/weak_echo_sigma_factor", m.weak_echo_sigma_factor, 1.0, 10.0);
   m.range_offset = config.number(p + "/range_offset", m.range_offset, -1.0, 1.0);
+  m.range_scale_ppm = config.number(p + "/range_scale_ppm", m.range_scale_ppm, -20000.0, 20000.0);
+  m.range_walk_weak = config.number(p + "/range_walk_weak", m.range_walk_weak, -0.5, 0.5);
+  m.range_walk_bright = config.number(p + "/range_walk_bright", m.range_walk_bright, -0.5, 0.5);
+  m.range_walk_rssi_weak = config.number(p + "/range_walk_rssi_weak", m.range_walk_rssi_weak, 0.0, 65534.0);
+  m.range_walk_rssi_bright = config.number(p + "/range_walk_rssi_bright", m.range_walk_rssi_bright,
+                                           m.range_walk_rssi_weak + 1.0, 65535.0);
   m.range_min = config.number(p + "/range_min", m.range_min, 0.0, 10.0);
   m.range_max = config.number(p + "/range_max", m.range_max, m.range_min + 0.01, 100.0);
   m.quantize_to_mm = config.boolean(p + "/quantize_to_mm", m.quantize_to_mm);
@@ -91,6 +116,10 @@ Lms100ErrorModel parse_lms100_error_model(const JsonConfig& config, const std::s
   m.metal_lobe_width =
       config.number(p + "/metal_lobe_width_deg", m.metal_lobe_width / kDegToRad, 0.1, 90.0) * kDegToRad;
   m.rssi_coverage_exponent = config.number(p + "/rssi_coverage_exponent", m.rssi_coverage_exponent, 0.0, 2.0);
+  m.rssi_scale =
+      config.choice(p + "/rssi_scale", to_string(m.rssi_scale), {"16bit", "8bit_in_16bit"}) == "16bit"
+          ? RssiScale::k16Bit
+          : RssiScale::k8BitIn16Bit;
   m.rssi_sigma = config.number(p + "/rssi_sigma", m.rssi_sigma, 0.0, 10000.0);
   m.dazzle_range = config.number(p + "/dazzle_range", m.dazzle_range, 0.0, 10.0);
   return m;

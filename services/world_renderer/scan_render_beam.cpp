@@ -243,7 +243,8 @@ BeamEcho render_beam(const World& world, const BeamProfile& profile, const Lms10
     return echo;
   }
   std::normal_distribution<double> normal(0.0, 1.0);
-  double range = echo.range + model.range_offset + range_sigma_for(model, echo.rssi) * normal(rng);
+  double range = echo.range + systematic_range_error(model, echo.range, echo.rssi) +
+                 range_sigma_for(model, echo.rssi) * normal(rng);
   const double rssi = echo.rssi + model.rssi_sigma * normal(rng);
   if (model.quantize_to_mm) range = std::round(range * 1000.0) / 1000.0;
   if (range < model.range_min || range > model.range_max) {

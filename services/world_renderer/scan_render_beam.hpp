@@ -70,7 +70,8 @@ BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100
                     const BeamCandidates* candidates = nullptr);
 
 /// The echo the sensor reports for beam laser_angle [rad] from map_T_laser: traced,
-/// then range noise, offset, limits, quantisation and RSSI noise applied.
+/// then systematic range error (offset, scale, walk), range noise, limits, quantisation and RSSI noise
+/// applied.
 BeamEcho render_beam(const World& world, const BeamProfile& profile, const Lms100ErrorModel& model,
                      const Pose2& map_T_laser, double laser_angle, std::mt19937_64& rng,
                      const BeamCandidates* candidates = nullptr);

@@ -35,7 +35,9 @@ void ScanRenderer::render(const World& world, const PoseAtTime& map_T_laser_at, 
     const BeamEcho echo = render_beam(world, profile_, config_.sensor, beam_poses_[i], out.beam_angle(i), rng,
                                       brute_force_ ? nullptr : &candidates);
     out.ranges[i] = static_cast<float>(echo.range);
-    if (config_.rssi_bits != 0) out.rssi[i] = rssi_for_bits(echo.rssi, config_.rssi_bits);
+    // The 8-bit-in-16-bit quirk is in the 16-bit channel; the 8-bit channel stays / 257.
+    const double rssi = config_.rssi_bits == 16 ? reported_rssi16(config_.sensor, echo.rssi) : echo.rssi;
+    if (config_.rssi_bits != 0) out.rssi[i] = rssi_for_bits(rssi, config_.rssi_bits);
     truth_[i] = echo.truth;
   }
 }

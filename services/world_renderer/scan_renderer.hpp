@@ -35,7 +35,8 @@ struct ScanGeometry {
 struct ScanRenderConfig {
   ScanGeometry geometry;
   Lms100ErrorModel sensor;
-  int rssi_bits = 16;  ///< 16, 8 (16-bit value / 257) or 0 (no RSSI)
+  /// 16, 8 (16-bit value / 257) or 0 (no RSSI); sensor.rssi_scale applies to the 16-bit channel.
+  int rssi_bits = 16;
 };
 
 /// map_T_laser at a host time [us].
