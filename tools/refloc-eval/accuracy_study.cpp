@@ -90,6 +90,14 @@ ModeSummary summarize(const std::vector<Measurement>& all, PipelineMode mode, si
       ++n_crlb;
     }
   }
+  ConsistencyAccumulator consistency;
+  for (const auto& m : all) {
+    if (m.mode != mode || !m.published_ok || m.wrong || !m.fix_ok) continue;
+    const Eigen::Vector3d error(m.estimate.x - m.truth.x, m.estimate.y - m.truth.y,
+                                angle_diff(m.estimate.theta, m.truth.theta));
+    consistency.add(error, m.covariance);
+  }
+  s.consistency = consistency.summary();
   int poses_ok = 0;
   for (size_t p = 0; p < pose_count; ++p) {
     if (!pose_has_ok[p]) continue;
@@ -145,8 +153,7 @@ StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Po
                       const std::vector<Pose2>& poses, const StudyConfig& config,
                       const ProgressCallback& progress) {
   sim::ScanRenderConfig render_config;
-  render_config.sensor.range_sigma = config.range_sigma;
-  render_config.sensor.range_offset = config.range_offset;
+  render_config.sensor = config.sensor;
   sim::ScanRenderer renderer(render_config);
   // The bound models the beam the renderer casts.
   BeamSpotModel spot;
@@ -174,9 +181,10 @@ StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Po
             t.kind == sim::HitKind::kReflector && t.coverage >= kCrlbMinCoverage ? map.index_of(t.id) : -1;
         if (index >= 0) crlb_beams.push_back({scan.beam_angle(b), index});
       }
-      const auto crlb = beam_range_crlb(map, poses[p], robot_T_laser, crlb_beams, config.range_sigma, spot);
-      const auto point_crlb = beam_range_crlb(map, poses[p], robot_T_laser, crlb_beams, config.range_sigma,
-                                              BeamSpotModel::point_beam());
+      const auto crlb =
+          beam_range_crlb(map, poses[p], robot_T_laser, crlb_beams, config.sensor.range_sigma, spot);
+      const auto point_crlb = beam_range_crlb(map, poses[p], robot_T_laser, crlb_beams,
+                                              config.sensor.range_sigma, BeamSpotModel::point_beam());
       for (LocalizationPipeline* pipeline : {&paper, &best}) {
         const PipelineOutput& out = pipeline->on_scan(scan);
         Measurement m;
@@ -189,6 +197,8 @@ StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Po
         // The solver runs only on an OK match (the services' rule): else no solution.
         m.solve_status = out.fix->has_pose ? out.solution->status : SolveStatus::kLost;
         m.estimate = out.fix->map_T_robot;
+        m.fix_ok = out.fix->status == LaserFixStatus::kOk;
+        m.covariance = out.fix->covariance;
         m.reflectors_used = out.fix->reflectors_used;
         if (crlb) {
           m.has_crlb = true;
@@ -228,7 +238,13 @@ nlohmann::json to_json(const ModeSummary& s) {
           {"point_beam_crlb_rmse_mm", s.point_beam_crlb_rmse_mm},
           {"point_beam_crlb_ratio", s.point_beam_crlb_ratio},
           {"recall", s.recall},
-          {"false_detection_rate", s.false_detection_rate}};
+          {"false_detection_rate", s.false_detection_rate},
+          {"nees_fixes", s.consistency.fixes},
+          {"unusable_covariances", s.consistency.unusable_covariances},
+          {"position_nees_mean", s.consistency.position_nees_mean},
+          {"position_outside_99_percent", s.consistency.position_outside_99},
+          {"heading_nees_mean", s.consistency.heading_nees_mean},
+          {"heading_outside_99_percent", s.consistency.heading_outside_99}};
 }
 
 std::string measurements_csv(const std::vector<Measurement>& measurements) {
@@ -236,17 +252,25 @@ std::string measurements_csv(const std::vector<Measurement>& measurements) {
       "mode,pose_index,repeat,true_x_m,true_y_m,true_theta_rad,published_ok,match_status,solve_status,wrong,"
       "est_x_m,est_y_m,est_theta_rad,"
       "err_x_mm,err_y_mm,reflectors_used,crlb_rmse_mm,visible_reflectors,detected_visible,detections,"
-      "false_detections\n";
+      "false_detections,fix_ok,nees_xy,nees_theta\n";
   for (const auto& m : measurements) {
+    // NEES columns stay empty without a pose or a usable covariance.
+    const auto nees_xy = position_nees({m.estimate.x - m.truth.x, m.estimate.y - m.truth.y},
+                                       m.covariance.topLeftCorner<2, 2>());
+    const auto nees_theta = heading_nees(angle_diff(m.estimate.theta, m.truth.theta), m.covariance(2, 2));
+    const std::string nees = fmt::format(
+        "{},{},{}", m.fix_ok ? 1 : 0, m.published_ok && nees_xy ? fmt::format("{:.4f}", *nees_xy) : "",
+        m.published_ok && nees_theta ? fmt::format("{:.4f}", *nees_theta) : "");
     csv += fmt::format(
-        "{},{},{},{:.4f},{:.4f},{:.5f},{},{},{},{},{:.5f},{:.5f},{:.6f},{:.2f},{:.2f},{},{:.3f},{},{},{},{}"
+        "{},{},{},{:.4f},{:.4f},{:.5f},{},{},{},{},{:.5f},{:.5f},{:.6f},{:.2f},{:.2f},{},{:.3f},{},{},{},{},{"
+        "}"
         "\n",
         to_string(m.mode), m.pose_index, m.repeat, m.truth.x, m.truth.y, m.truth.theta,
         m.published_ok ? 1 : 0, static_cast<int>(m.match_status), static_cast<int>(m.solve_status),
         m.wrong ? 1 : 0, m.estimate.x, m.estimate.y, m.estimate.theta, 1000.0 * (m.estimate.x - m.truth.x),
         1000.0 * (m.estimate.y - m.truth.y), m.reflectors_used,
         m.has_crlb ? 1000.0 * std::sqrt(m.crlb_var_xy) : 0.0, m.visible_reflectors, m.detected_visible,
-        m.detections, m.false_detections);
+        m.detections, m.false_detections, nees);
   }
   return csv;
 }

@@ -4,6 +4,7 @@
 // pipeline modes, and compare with the truth and the Cramér-Rao bound.
 
 #include "common/se2.hpp"
+#include "fix_consistency.hpp"
 #include "localization_pipeline.hpp"
 #include "world_renderer/scan_renderer.hpp"
 #include "world_renderer/world.hpp"
@@ -18,9 +19,9 @@
 namespace refloc {
 
 struct StudyConfig {
-  double range_sigma = 0.012;  ///< LMS100 statistical range error, 1 sigma [m]
-  double range_offset = 0.0;   ///< systematic range error [m]
-  int repeats = 1;             ///< scans per pose
+  /// The simulated sensor: its range_sigma also sizes the Cramér-Rao bound.
+  sim::Lms100ErrorModel sensor;
+  int repeats = 1;  ///< scans per pose
   uint64_t seed = 1;
   double wrong_distance = 0.2;  ///< a published pose farther than this from the truth is wrong [m]
   double wrong_angle = 5.0 * M_PI / 180.0;  ///< ... or turned more than this [rad]
@@ -50,7 +51,9 @@ struct Measurement {
   int detected_visible = 0;
   int detections = 0;
   int false_detections = 0;
-  bool wrong = false;  ///< published as OK but off by more than the wrong-pose limits
+  bool wrong = false;   ///< published as OK but off by more than the wrong-pose limits
+  bool fix_ok = false;  ///< the fix's status is OK (not DEGRADED)
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< the published one [m^2, m rad, rad^2]
 };
 
 struct ModeSummary {
@@ -69,6 +72,8 @@ struct ModeSummary {
   double point_beam_crlb_ratio = 0.0;    ///< rmse / point_beam_crlb_rmse
   double recall = 0.0;                   ///< visible reflectors detected / visible reflectors
   double false_detection_rate = 0.0;     ///< detections not on a real reflector / detections
+  /// NEES of the OK, not wrong, fixes against their published covariance (fix_consistency.hpp).
+  ConsistencySummary consistency;
 };
 
 struct StudyResult {

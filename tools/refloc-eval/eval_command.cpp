@@ -14,6 +14,28 @@
 
 namespace refloc {
 
+namespace {
+
+sim::Lms100ErrorModel sensor_model(const EvalOptions& o) {
+  if (o.range_walk_rssi_bright <= o.range_walk_rssi_weak) {
+    throw ConfigError(fmt::format("--range-walk-rssi-bright {} must be above --range-walk-rssi-weak {}",
+                                  o.range_walk_rssi_bright, o.range_walk_rssi_weak));
+  }
+  sim::Lms100ErrorModel m;
+  m.range_sigma = o.sigma_mm / 1000.0;
+  m.range_offset = o.offset_mm / 1000.0;
+  m.range_scale_ppm = o.range_scale_ppm;
+  m.range_walk_bright = o.range_walk_mm / 1000.0;
+  m.range_walk_weak = o.range_walk_weak_mm / 1000.0;
+  m.range_walk_rssi_weak = o.range_walk_rssi_weak;
+  m.range_walk_rssi_bright = o.range_walk_rssi_bright;
+  m.retro_range_bias = o.retro_range_bias_mm / 1000.0;
+  m.rssi_scale = o.rssi_scale == "8bit_in_16bit" ? sim::RssiScale::k8BitIn16Bit : sim::RssiScale::k16Bit;
+  return m;
+}
+
+}  // namespace
+
 int run_eval(const std::string& command, EvalOptions o) {
   const bool paper_table = command == "paper-table";
   if (o.world_file.empty())
@@ -28,8 +50,7 @@ int run_eval(const std::string& command, EvalOptions o) {
   const ReflectorMap map = load_reflector_map(world.map_file);
   const RobotConfig robot = load_robot_config(o.robot_file);
   StudyConfig config;
-  config.range_sigma = o.sigma_mm / 1000.0;
-  config.range_offset = o.offset_mm / 1000.0;
+  config.sensor = sensor_model(o);
   config.seed = o.seed;
   config.repeats = paper_table ? o.repeats : 1;
   config.scan_spacing = o.scan_spacing_s;
@@ -43,13 +64,13 @@ int run_eval(const std::string& command, EvalOptions o) {
   PipelineConfigs default_configs =
       load_pipeline_configs(PipelineMode::kDefault, o.extractor_file, o.matcher_file, o.solver_file);
   // The clustering threshold and the fit weights follow the simulated sensor's noise.
-  paper_configs.extractor.extractor.clustering.range_sigma = config.range_sigma;
-  default_configs.extractor.extractor.clustering.range_sigma = config.range_sigma;
+  paper_configs.extractor.extractor.clustering.range_sigma = config.sensor.range_sigma;
+  default_configs.extractor.extractor.clustering.range_sigma = config.sensor.range_sigma;
   const StudyResult r = run_study(world, map, robot.robot_T_laser, paper_configs, default_configs, poses,
                                   config, o.progress ? ProgressCallback(print_progress) : ProgressCallback());
   if (paper_table) print_paper_table(r, poses, config.repeats);
-  fmt::print("\n{} over {} poses x {} scans, sigma {:.1f} mm, offset {:.1f} mm, world {}\n", command,
-             poses.size(), config.repeats, o.sigma_mm, o.offset_mm, o.world_file);
+  fmt::print("\n{} over {} poses x {} scans, world {}\n{}\n", command, poses.size(), config.repeats,
+             o.world_file, describe(config.sensor));
   print_summary("paper", r.paper);
   print_summary("default", r.default_mode);
 
@@ -58,6 +79,7 @@ int run_eval(const std::string& command, EvalOptions o) {
   j["world"] = o.world_file;
   j["sigma_mm"] = o.sigma_mm;
   j["offset_mm"] = o.offset_mm;
+  j["sensor_model"] = to_json(config.sensor);
   j["seed"] = o.seed;
   j["scans_per_pose"] = config.repeats;
   j["modes"]["paper"] = to_json(r.paper);

@@ -18,6 +18,13 @@ struct EvalOptions {
   std::string solver_file = "deploy/config/pose_solver.json";
   double sigma_mm = 12.0;
   double offset_mm = 0.0;
+  double range_scale_ppm = 0.0;           ///< Lms100ErrorModel::range_scale_ppm
+  double range_walk_mm = 0.0;             ///< walk of bright echoes (range_walk_bright) [mm]
+  double range_walk_weak_mm = 0.0;        ///< walk of weak echoes (range_walk_weak) [mm]
+  double range_walk_rssi_weak = 30000;    ///< [16-bit units]
+  double range_walk_rssi_bright = 60000;  ///< [16-bit units]
+  double retro_range_bias_mm = 0.0;       ///< Lms100ErrorModel::retro_range_bias [mm]
+  std::string rssi_scale = "16bit";       ///< "16bit" or "8bit_in_16bit"
   uint64_t seed = 1;
   int repeats = 3;
   int n = 1000;

@@ -8,6 +8,52 @@
 
 namespace refloc {
 
+nlohmann::json to_json(const sim::Lms100ErrorModel& m) {
+  return {{"range_sigma", m.range_sigma},
+          {"weak_echo_sigma_factor", m.weak_echo_sigma_factor},
+          {"range_offset", m.range_offset},
+          {"range_scale_ppm", m.range_scale_ppm},
+          {"range_walk_weak", m.range_walk_weak},
+          {"range_walk_bright", m.range_walk_bright},
+          {"range_walk_rssi_weak", m.range_walk_rssi_weak},
+          {"range_walk_rssi_bright", m.range_walk_rssi_bright},
+          {"retro_range_bias", m.retro_range_bias},
+          {"range_min", m.range_min},
+          {"range_max", m.range_max},
+          {"quantize_to_mm", m.quantize_to_mm},
+          {"beam_divergence", m.beam_divergence},
+          {"beam_exit_diameter", m.beam_exit_diameter},
+          {"beam_subrays", m.beam_subrays},
+          {"echo_merge_distance", m.echo_merge_distance},
+          {"detection_limit_remission", m.detection_limit_remission},
+          {"detection_limit_range", m.detection_limit_range},
+          {"rssi_at_detection_limit", m.rssi_at_detection_limit},
+          {"rssi_per_decade", m.rssi_per_decade},
+          {"diffuse_rssi_max", m.diffuse_rssi_max},
+          {"max_incidence", m.max_incidence},
+          {"retro_rssi_near", m.retro_rssi_near},
+          {"retro_rssi_drop_per_m", m.retro_rssi_drop_per_m},
+          {"retro_incidence_exponent", m.retro_incidence_exponent},
+          {"tape_rssi_near", m.tape_rssi_near},
+          {"tape_full_incidence", m.tape_full_incidence},
+          {"tape_cutoff_incidence", m.tape_cutoff_incidence},
+          {"metal_rssi_peak", m.metal_rssi_peak},
+          {"metal_lobe_width", m.metal_lobe_width},
+          {"rssi_coverage_exponent", m.rssi_coverage_exponent},
+          {"rssi_sigma", m.rssi_sigma},
+          {"rssi_scale", sim::to_string(m.rssi_scale)},
+          {"dazzle_range", m.dazzle_range}};
+}
+
+std::string describe(const sim::Lms100ErrorModel& m) {
+  return fmt::format(
+      "sensor: sigma {:.1f} mm, offset {:+.1f} mm, scale {:+.0f} ppm, walk {:+.1f} mm at RSSI <= {:.0f} to "
+      "{:+.1f} mm at RSSI >= {:.0f}, retro bias {:+.1f} mm, RSSI scale {}",
+      1000 * m.range_sigma, 1000 * m.range_offset, m.range_scale_ppm, 1000 * m.range_walk_weak,
+      m.range_walk_rssi_weak, 1000 * m.range_walk_bright, m.range_walk_rssi_bright, 1000 * m.retro_range_bias,
+      sim::to_string(m.rssi_scale));
+}
+
 void print_progress(size_t done, size_t total) {
   const int width = 40;
   const int filled = static_cast<int>(width * done / std::max<size_t>(total, 1));
@@ -24,6 +70,12 @@ void print_summary(const char* name, const ModeSummary& s) {
       name, s.published_ok, s.measurements, s.wrong_matches, s.mean_max_err_x_mm, s.mean_max_err_y_mm,
       s.rmse_mm, s.crlb_rmse_mm, s.crlb_ratio, s.point_beam_crlb_rmse_mm, s.point_beam_crlb_ratio,
       s.heading_rmse_deg, s.recall, s.false_detection_rate);
+  const ConsistencySummary& c = s.consistency;
+  fmt::print(
+      "{:<8} NEES over {} OK fixes ({} unusable covariances): position mean {:.2f} (honest 2), outside 99 % "
+      "{:.1f} % (honest 1 %); heading mean {:.2f} (honest 1), outside 99 % {:.1f} %\n",
+      "", c.fixes, c.unusable_covariances, c.position_nees_mean, 100 * c.position_outside_99,
+      c.heading_nees_mean, 100 * c.heading_outside_99);
 }
 
 void print_paper_table(const StudyResult& r, const std::vector<Pose2>& poses, int repeats) {

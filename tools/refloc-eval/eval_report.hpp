@@ -2,8 +2,10 @@
 // refloc-eval's console tables, JSON, CSV and SVG of a study's result.
 
 #include "accuracy_study.hpp"
+#include "world_renderer/lms100_error_model.hpp"
 
 #include <Eigen/Core>
+#include <nlohmann/json.hpp>
 
 #include <cstddef>
 #include <string>
@@ -11,6 +13,10 @@
 
 namespace refloc {
 
+/// The simulated sensor's error model, every field (lengths in m, angles in rad, RSSI in 16-bit units).
+nlohmann::json to_json(const sim::Lms100ErrorModel& model);
+/// One line naming the model's range error terms, for the text report.
+std::string describe(const sim::Lms100ErrorModel& model);
 /// A progress bar on stderr.
 void print_progress(size_t done, size_t total);
 /// One line of a mode's summary numbers.

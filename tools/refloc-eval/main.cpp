@@ -26,6 +26,34 @@ void add_common_options(CLI::App* c, EvalOptions& o) {
   c->add_option("--offset-mm", o.offset_mm, "systematic range offset [mm]")
       ->capture_default_str()
       ->check(CLI::Range(-100.0, 100.0));
+  c->add_option("--range-scale-ppm", o.range_scale_ppm,
+                "range-proportional error [1e-6 of the range]; 1500 = +30 mm at 20 m")
+      ->capture_default_str()
+      ->check(CLI::Range(-20000.0, 20000.0));
+  c->add_option("--range-walk-mm", o.range_walk_mm,
+                "range walk of bright echoes (RSSI >= --range-walk-rssi-bright: reflectors) [mm]")
+      ->capture_default_str()
+      ->check(CLI::Range(-100.0, 100.0));
+  c->add_option("--range-walk-weak-mm", o.range_walk_weak_mm,
+                "range walk of weak echoes (RSSI <= --range-walk-rssi-weak: walls) [mm]; linear between")
+      ->capture_default_str()
+      ->check(CLI::Range(-100.0, 100.0));
+  c->add_option("--range-walk-rssi-weak", o.range_walk_rssi_weak,
+                "RSSI of the weak walk level [16-bit units]")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 65534.0));
+  c->add_option("--range-walk-rssi-bright", o.range_walk_rssi_bright,
+                "RSSI of the bright walk level [16-bit units], above the weak one")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0, 65535.0));
+  c->add_option("--retro-range-bias-mm", o.retro_range_bias_mm,
+                "extra range of the retro-reflective part of a spot [mm]")
+      ->capture_default_str()
+      ->check(CLI::Range(-100.0, 100.0));
+  c->add_option("--rssi-scale", o.rssi_scale,
+                "what the 16-bit RSSI channel carries: 16bit, or 8bit_in_16bit (values 0..255)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"16bit", "8bit_in_16bit"}));
   c->add_option("--seed", o.seed, "random seed")->capture_default_str();
   c->add_option(
        "--scan-spacing-s", o.scan_spacing_s,
