@@ -135,9 +135,6 @@ TEST(DecodeErrorLogLimiter, ClockGoingBackwardsDoesNotSilenceTheLog) {
   EXPECT_EQ(limiter.on_error(1'000), 1);
 }
 
-}  // namespace
-}  // namespace refloc
-
 TEST(LcmFiniteNumbers, TheFirstNonFiniteNumberIsNamedWithItsPath) {
   pose2d_t pose{};
   fill_lcm_sample(pose, 1);
@@ -204,3 +201,6 @@ TEST(ServiceRuntimeBoundedDecode, NonFiniteMessageIsCountedPerChannelAndNeverHan
   runtime.spin_once(100);
   EXPECT_EQ(delivered, 1);
 }
+
+}  // namespace
+}  // namespace refloc
