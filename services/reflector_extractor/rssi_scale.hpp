@@ -28,10 +28,13 @@ enum class RssiScale : uint8_t {
 struct RssiScaleConfig {
   enum class Mode { kAuto, kNative, k8bitIn16bit };
   Mode mode = Mode::kAuto;
-  /// Scans with echoes before an 8-bit verdict: 0.1 s at 50 Hz, the only scans lost to it.
-  int min_scans = 5;
+  /// Scans with echoes before an 8-bit verdict: the first one is lost to it (20 ms at 50 Hz).
+  /// Two, not one: a true 16-bit stream flapping in and out of the verdict needs two dark
+  /// scans in a row each time. A wrong verdict costs little: it only lasts while no echo is
+  /// above raw 255, i.e. while no reflector is in view.
+  int min_scans = 2;
   /// Echoes before an 8-bit verdict: a scan of open space with a few echoes proves little.
-  int min_echoes = 500;
+  int min_echoes = 300;
 };
 
 class RssiScaleDetector {

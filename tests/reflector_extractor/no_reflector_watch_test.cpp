@@ -100,7 +100,7 @@ TEST_F(NoReflectorNode, WithAutoScaleTheSameStreamFindsTheReflectorAndStaysOk) {
     if (verdict_scan < 0 && node_.rssi_scale() == RssiScale::k8bitIn16bit) verdict_scan = i;
   }
   ASSERT_GE(verdict_scan, RssiScaleConfig{}.min_scans - 1);
-  EXPECT_LE(verdict_scan, 20);  // 500 echoes of a wall spanning ~100 beams
+  EXPECT_LE(verdict_scan, 20);  // 300 echoes of a wall spanning ~100 beams
   // Scan-by-scan equality with the 16-bit scale is RssiScaleStream's; here: found from the verdict on.
   EXPECT_GE(detected, 95);
   EXPECT_LE(detected, 110 - verdict_scan);
