@@ -26,6 +26,13 @@ int main(int argc, char** argv) {
   app.add_option("--window-max-s", o.windows.max_duration_s, "longest window")
       ->check(CLI::Range(0.05, 60.0))
       ->capture_default_str();
+  app.add_option("--method", o.method,
+                 "direct: every fix, segments with own start poses; hand-eye: A X = X B")
+      ->check(CLI::IsMember({"direct", "hand-eye"}))
+      ->capture_default_str();
+  app.add_option("--segment-s", o.segment_s, "direct: segment length")
+      ->check(CLI::Range(0.2, 60.0))
+      ->capture_default_str();
   app.add_flag("!--no-translation-scale", o.estimate_translation_scale,
                "trust odometry's translation scale (do not estimate it)");
   try {

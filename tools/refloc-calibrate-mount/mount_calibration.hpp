@@ -48,6 +48,8 @@ struct MountCalibrationResult {
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< (x, y, theta) [m^2, m rad, rad^2]
   double translation_scale = 1.0;                        ///< s: laser translation / odometry translation
   double translation_scale_sigma = 0.0;
+  double heading_scale = 1.0;  ///< direct only: h, laser rotation / odometry rotation
+  Eigen::Matrix2d scales_covariance = Eigen::Matrix2d::Zero();  ///< direct only: of (s, h)
   double chi2_per_dof = 0.0;
   size_t windows = 0;
   double total_rotation_rad = 0.0;   ///< sum of |theta_B| over the windows

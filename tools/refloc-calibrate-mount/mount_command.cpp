@@ -2,7 +2,7 @@
 
 #include "common/json_config.hpp"
 #include "common/robot_config.hpp"
-#include "mount_calibration.hpp"
+#include "mount_direct.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -25,13 +25,20 @@ int run_mount_calibration(const MountCommandOptions& o) {
   options.initial_robot_T_laser = robot.robot_T_laser;
   options.estimate_translation_scale = o.estimate_translation_scale;
   options.odometry_noise = robot.odometry_noise;
-  const MountCalibrationResult r = calibrate_mount(windows, options);
+  DirectMountOptions direct;
+  direct.mount = options;
+  direct.segment_s = o.segment_s;
+  direct.max_fix_gap_s = o.windows.max_fix_gap_s;
+  const MountCalibrationResult r = o.method == "direct"
+                                       ? calibrate_mount_direct(drive, robot.robot_T_laser, direct)
+                                       : calibrate_mount(windows, options);
   const double duration_s =
       drive.laser_fixes.empty()
           ? 0.0
           : static_cast<double>(drive.laser_fixes.back().utime - drive.laser_fixes.front().utime) * 1e-6;
-  fmt::print("{} windows over {:.1f} s of fixes; turned {:.2f} rad, {:.2f} m straight\n", r.windows,
-             duration_s, r.total_rotation_rad, r.total_translation_m);
+  fmt::print("{}: {} {} over {:.1f} s of fixes; turned {:.2f} rad, {:.2f} m straight\n", o.method, r.windows,
+             o.method == "direct" ? "fixes" : "windows", duration_s, r.total_rotation_rad,
+             r.total_translation_m);
   if (!r.ok) {
     fmt::print(stderr, "refloc-calibrate-mount: no mount: {}\n", r.message);
     return 1;

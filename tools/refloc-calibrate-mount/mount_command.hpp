@@ -15,6 +15,8 @@ struct MountCommandOptions {
   CalibrationChannels channels;
   WindowOptions windows;
   bool estimate_translation_scale = true;
+  std::string method = "direct";  ///< "direct" (mount_direct.hpp, every fix) or "hand-eye" (windows)
+  double segment_s = 4.0;         ///< direct: segment length [s]
 };
 
 /// Returns the exit code: 0 solved, 1 the drive does not determine the mount, 2 bad input.

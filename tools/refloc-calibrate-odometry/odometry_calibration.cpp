@@ -1,6 +1,7 @@
 #include "odometry_calibration.hpp"
 
 #include "common/odometry_noise.hpp"
+#include "mount_direct.hpp"
 
 #include <ceres/ceres.h>
 
@@ -121,6 +122,50 @@ std::vector<OdometryWindow> odometry_windows(const CalibrationDrive& drive, cons
     out.push_back(std::move(window));
   }
   return out;
+}
+
+std::vector<TimedPose> encoder_odometry(const std::vector<EncoderSample>& encoders,
+                                        const RobotConfig& nominal) {
+  const MecanumKinematics kinematics(nominal);
+  std::vector<TimedPose> out;
+  Pose2 odom_T_robot;
+  for (size_t k = 0; k < encoders.size(); ++k) {
+    if (k > 0) {
+      const auto angle = wheel_angle_delta(encoders[k - 1], encoders[k], nominal.encoder_ticks_per_rev);
+      odom_T_robot = odom_T_robot * se2_exp(kinematics.forward(angle));
+    }
+    out.push_back({encoders[k].utime, odom_T_robot, Eigen::Matrix3d::Zero()});
+  }
+  return out;
+}
+
+OdometryCalibrationResult calibrate_odometry_direct(const CalibrationDrive& drive, const RobotConfig& nominal,
+                                                    const Pose2& configured_robot_T_laser,
+                                                    const Pose2& robot_T_laser, double segment_s) {
+  CalibrationDrive from_encoders = drive;
+  from_encoders.odometry = encoder_odometry(drive.encoders, nominal);
+  DirectMountOptions o;
+  o.mount.initial_robot_T_laser = robot_T_laser;
+  o.mount.odometry_noise = nominal.odometry_noise;
+  o.segment_s = segment_s;
+  o.hold_mount = true;
+  const MountCalibrationResult m = calibrate_mount_direct(from_encoders, configured_robot_T_laser, o);
+  OdometryCalibrationResult result;
+  result.ok = m.ok;
+  result.message = m.message;
+  result.windows = m.windows;
+  result.total_rotation_rad = m.total_rotation_rad;
+  result.total_translation_m = m.total_translation_m;
+  result.chi2_per_dof = m.chi2_per_dof;
+  if (!m.ok) return result;
+  // (s_r, s_k) = (s, s / h): covariance through the Jacobian.
+  const double s = m.translation_scale, h = m.heading_scale;
+  result.radius_scale = s;
+  result.geometry_scale = s / h;
+  Eigen::Matrix2d j;
+  j << 1.0, 0.0, 1.0 / h, -s / (h * h);
+  result.covariance = j * m.scales_covariance * j.transpose();
+  return result;
 }
 
 RobotConfig corrected_robot(const RobotConfig& nominal, double radius_scale, double geometry_scale) {

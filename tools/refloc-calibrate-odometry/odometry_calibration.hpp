@@ -56,6 +56,19 @@ OdometryCalibrationResult calibrate_odometry(const std::vector<OdometryWindow>& 
 std::vector<OdometryWindow> odometry_windows(const CalibrationDrive& drive, const RobotConfig& nominal,
                                              const WindowOptions& options);
 
+/// Odometry recomputed from the encoders with the nominal kinematics (what mecanum_odometry
+/// does, without its noise handling): odom_T_robot at every encoder stamp.
+std::vector<TimedPose> encoder_odometry(const std::vector<EncoderSample>& encoders,
+                                        const RobotConfig& nominal);
+
+/// The direct solution (every fix; refloc-calibrate-mount's mount_direct.hpp on encoder odometry):
+/// its odometry scales s (translation) and h (heading) are s_r and s_r / s_k. robot_T_laser:
+/// the calibrated mount, held; the drive's laser_fixes as LASER_POSE gives them (with
+/// configured_robot_T_laser).
+OdometryCalibrationResult calibrate_odometry_direct(const CalibrationDrive& drive, const RobotConfig& nominal,
+                                                    const Pose2& configured_robot_T_laser,
+                                                    const Pose2& robot_T_laser, double segment_s);
+
 /// The robot with the scales applied: wheel_radius * s_r, lx and ly each * s_k.
 RobotConfig corrected_robot(const RobotConfig& nominal, double radius_scale, double geometry_scale);
 

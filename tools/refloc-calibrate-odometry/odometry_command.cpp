@@ -11,6 +11,12 @@
 #include <fstream>
 
 namespace refloc {
+namespace {
+
+int report_odometry_calibration(const OdometryCommandOptions& o, const RobotConfig& robot,
+                                const OdometryCalibrationResult& r);
+
+}  // namespace
 
 int run_odometry_calibration(const OdometryCommandOptions& o) {
   const RobotConfig robot = load_robot_config(o.robot_path);
@@ -19,6 +25,12 @@ int run_odometry_calibration(const OdometryCommandOptions& o) {
   fmt::print("{}: {} {}, {} {} OK ({} not OK, unused), {} undecodable\n", o.log_path, counts.encoders,
              o.channels.encoders, counts.laser_fixes_ok, o.channels.laser_pose, counts.laser_fixes_not_ok,
              counts.undecodable);
+  const Pose2 mount = o.robot_T_laser.value_or(robot.robot_T_laser);
+  if (o.method == "direct") {
+    const OdometryCalibrationResult r =
+        calibrate_odometry_direct(drive, robot, robot.robot_T_laser, mount, o.segment_s);
+    return report_odometry_calibration(o, robot, r);
+  }
   if (o.robot_T_laser) {
     // LASER_POSE = map_T_laser * configured^-1; re-read it with the given mount.
     const Pose2 correction = robot.robot_T_laser * o.robot_T_laser->inverse();
@@ -27,9 +39,15 @@ int run_odometry_calibration(const OdometryCommandOptions& o) {
   const std::vector<OdometryWindow> windows = odometry_windows(drive, robot, o.windows);
   OdometryCalibrationOptions options;
   options.odometry_noise = robot.odometry_noise;
-  const OdometryCalibrationResult r = calibrate_odometry(windows, options);
-  fmt::print("{} windows; turned {:.2f} rad, drove {:.2f} m\n", r.windows, r.total_rotation_rad,
-             r.total_translation_m);
+  return report_odometry_calibration(o, robot, calibrate_odometry(windows, options));
+}
+
+namespace {
+
+int report_odometry_calibration(const OdometryCommandOptions& o, const RobotConfig& robot,
+                                const OdometryCalibrationResult& r) {
+  fmt::print("{}: {} {}; turned {:.2f} rad, drove {:.2f} m\n", o.method, r.windows,
+             o.method == "direct" ? "fixes" : "windows", r.total_rotation_rad, r.total_translation_m);
   if (!r.ok) {
     fmt::print(stderr, "refloc-calibrate-odometry: no calibration: {}\n", r.message);
     return 1;
@@ -62,5 +80,7 @@ int run_odometry_calibration(const OdometryCommandOptions& o) {
   }
   return 0;
 }
+
+}  // namespace
 
 }  // namespace refloc

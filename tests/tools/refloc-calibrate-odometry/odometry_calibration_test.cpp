@@ -27,6 +27,30 @@ TEST(OdometryCalibration, RecoversRadiusAndGeometryScalesWithinATenthOfAPercent)
   EXPECT_LT(std::abs(r.geometry_scale - 1.02), 4.0 * std::sqrt(r.covariance(1, 1)));
 }
 
+TEST(OdometryCalibrationDirect, RecoversRadiusAndGeometryScalesFromEveryFix) {
+  const test::SyntheticDriveSpec spec = test::brief_spec(1.01, 1.02);
+  const CalibrationDrive drive = test::make_synthetic_drive(spec);
+  const OdometryCalibrationResult r = calibrate_odometry_direct(
+      drive, spec.nominal, spec.nominal.robot_T_laser, spec.truth.robot_T_laser, 4.0);
+  ASSERT_TRUE(r.ok) << r.message;
+  EXPECT_NEAR(r.radius_scale, 1.01, 0.001 * 1.01);
+  EXPECT_NEAR(r.geometry_scale, 1.02, 0.001 * 1.02);
+  EXPECT_GT(r.covariance(0, 0), 0.0);
+}
+
+TEST(OdometryCalibrationDirect, EncoderOdometryIntegratesTheNominalKinematics) {
+  RobotConfig robot;
+  const MecanumKinematics kinematics(robot);
+  const WheelArray angle = kinematics.inverse(BodyTwist{1.0, 0.0, 0.0});  // 1 m forward
+  const double ticks_per_rad = robot.encoder_ticks_per_rev / (2.0 * M_PI);
+  EncoderSample a{0, {0, 0, 0, 0}}, b{1'000'000, {}};
+  for (size_t w = 0; w < 4; ++w) b.ticks[w] = static_cast<int32_t>(std::lround(angle[w] * ticks_per_rad));
+  const std::vector<TimedPose> odom = encoder_odometry({a, b}, robot);
+  ASSERT_EQ(odom.size(), 2u);
+  EXPECT_NEAR(odom[1].pose.x, 1.0, 1e-4);
+  EXPECT_NEAR(odom[1].pose.y, 0.0, 1e-9);
+}
+
 TEST(OdometryCalibration, ANominalRobotComesOutUnscaled) {
   test::SyntheticDriveSpec spec = test::brief_spec(1.0, 1.0);
   spec.nominal.robot_T_laser = spec.truth.robot_T_laser;
