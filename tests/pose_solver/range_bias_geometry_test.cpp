@@ -103,6 +103,43 @@ TEST(RangeBiasGeometry, TheHallEstimatesItAndTheNodeKeepsItAcrossScans) {
   EXPECT_LT(node.range_bias().sigma(), 0.0015);
 }
 
+TEST(RangeBiasGeometry, TheHeartbeatCarriesTheKeptEstimateAndWhyItWasNotEstimated) {
+  const ReflectorMap map = testing::hall_map();
+  std::mt19937 rng(64);
+  SolverNode node(SolverConfig{}, testing::corner_mount());
+  std::map<std::string, int64_t> gauges;
+  const auto scan = [&] {
+    auto s = testing::render_detections(map, Pose2{7.0, 5.0, 0.3} * testing::corner_mount(),
+                                        testing::SyntheticSensor{}, rng);
+    for (ReflectorDetection& d : s.detections)
+      d.laser_p_center *= (d.laser_p_center.norm() + 0.02) / d.laser_p_center.norm();
+    return s;
+  };
+  constexpr int64_t kT0 = 1'700'000'000'000'000, kPeriod = 20'000;
+  for (int k = 1; k <= 50; ++k) {
+    const auto s = scan();
+    const SolverOutput& out = node.on_message(kT0 + k * kPeriod, k, MatchVerdict::kOk, s.detections,
+                                              testing::true_matches(s, map), kT0 + k * kPeriod + 3'000);
+    ASSERT_TRUE(out.accepted);
+    EXPECT_STREQ(out.ok_detail(), "");
+    out.for_each_gauge([&](const char* name, int64_t value) { gauges[name] = value; });
+  }
+  std::printf("heartbeat after 50 scans at +20 mm: range_bias_um %lld, range_bias_sigma_um %lld\n",
+              static_cast<long long>(gauges["range_bias_um"]),
+              static_cast<long long>(gauges["range_bias_sigma_um"]));
+  EXPECT_NEAR(static_cast<double>(gauges["range_bias_um"]), 20'000.0, 3.0 * gauges["range_bias_sigma_um"]);
+  EXPECT_LT(gauges["range_bias_sigma_um"], 1'500);
+  // A scan of three reflectors: DEGRADED (min_reflectors_ok), b held at the kept estimate.
+  auto s = scan();
+  auto matches = testing::true_matches(s, map);
+  matches.resize(3);
+  const SolverOutput& out = node.on_message(kT0 + 51 * kPeriod, 51, MatchVerdict::kOk, s.detections, matches,
+                                            kT0 + 51 * kPeriod + 3'000);
+  ASSERT_TRUE(out.fix->has_pose);
+  EXPECT_TRUE(out.fix->range_bias_unestimable());
+  EXPECT_NEAR(out.fix->range_bias, 1e-6 * static_cast<double>(gauges["range_bias_um"]), 1e-5);
+}
+
 TEST(RangeBiasFilter, GrowsWithTheDriftUpToThePriorAndAnOlderStampAddsNoTime) {
   RangeBiasConfig config;
   config.drift = 1e-3;  // [m/sqrt(s)]
