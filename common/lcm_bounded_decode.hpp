@@ -19,13 +19,14 @@ namespace refloc {
 /// The outcome of one bounded decode; reason says why the bytes were refused.
 struct LcmDecodeResult {
   bool ok = false;
-  bool non_finite = false;  ///< well-formed, refused for a NaN/inf number (LcmNumbers::kFiniteOnly)
+  bool implausible_number = false;  ///< well-formed, refused for a number (LcmNumbers::kPlausibleOnly)
   std::string reason;
 };
 
-/// kFiniteOnly: what a service consumes (ServiceRuntime::subscribe); kAsSent: what a tool
-/// reading a log must show as it was, NaN included.
-enum class LcmNumbers { kAsSent, kFiniteOnly };
+/// kPlausibleOnly (NaN, inf and |v| > 1e15 refused, see find_implausible_lcm_number): what a
+/// service consumes (ServiceRuntime::subscribe); kAsSent: what a tool reading a log must show
+/// as it was, NaN included.
+enum class LcmNumbers { kAsSent, kPlausibleOnly };
 
 /// Check, then decode data into message. Never throws and never lets a declared length
 /// allocate more than the type's limits allow; message is unspecified when !ok.
@@ -36,10 +37,10 @@ LcmDecodeResult decode_lcm_bounded(const void* data, size_t size, Message& messa
   const auto* bytes = static_cast<const uint8_t*>(data);
   result.reason = check_lcm_datagram(lcm_schema_of<Message>(), bytes, size);
   if (!result.reason.empty()) return result;
-  if (numbers == LcmNumbers::kFiniteOnly) {
-    result.reason = find_non_finite_lcm_number(lcm_schema_of<Message>(), bytes, size);
+  if (numbers == LcmNumbers::kPlausibleOnly) {
+    result.reason = find_implausible_lcm_number(lcm_schema_of<Message>(), bytes, size);
     if (!result.reason.empty()) {
-      result.non_finite = true;
+      result.implausible_number = true;
       return result;
     }
   }

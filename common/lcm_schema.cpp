@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cmath>
 #include <cstring>
 
 namespace refloc {
@@ -41,27 +42,26 @@ int64_t read_signed(const uint8_t* p, int64_t bytes) {
   return static_cast<int64_t>(v << shift) >> shift;
 }
 
-/// Whether an IEEE-754 number, big-endian as LCM writes it, is NaN or infinite: its exponent
-/// bits are all ones. Reads the bits, so a signalling NaN raises nothing.
-bool is_non_finite(const uint8_t* p, LcmFieldKind kind) {
-  if (kind == LcmFieldKind::kFloat) return (p[0] & 0x7F) == 0x7F && (p[1] & 0x80) == 0x80;
-  return (p[0] & 0x7F) == 0x7F && (p[1] & 0xF0) == 0xF0;
-}
-
-const char* non_finite_name(const uint8_t* p, LcmFieldKind kind) {
-  const bool mantissa_zero =
-      kind == LcmFieldKind::kFloat
-          ? (p[1] & 0x7F) == 0 && p[2] == 0 && p[3] == 0
-          : (p[1] & 0x0F) == 0 && p[2] == 0 && p[3] == 0 && p[4] == 0 && p[5] == 0 && p[6] == 0 && p[7] == 0;
-  if (!mantissa_zero) return "NaN";
-  return (p[0] & 0x80) != 0 ? "-inf" : "inf";
+/// An LCM float/double (big-endian IEEE-754) as a double. memcpy of the bits: a signalling
+/// NaN raises nothing.
+double read_real(const uint8_t* p, LcmFieldKind kind) {
+  if (kind == LcmFieldKind::kFloat) {
+    const auto bits = static_cast<uint32_t>(read_signed(p, 4));
+    float f = 0.0F;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+  }
+  const auto bits = static_cast<uint64_t>(read_signed(p, 8));
+  double d = 0.0;
+  std::memcpy(&d, &bits, sizeof d);
+  return d;
 }
 
 class DatagramWalk {
  public:
-  /// finite_only: a NaN or infinite float/double is a lie too (reason "<field> is NaN").
-  DatagramWalk(const uint8_t* data, size_t size, bool finite_only)
-      : data_(data), size_(static_cast<int64_t>(size)), finite_only_(finite_only) {}
+  /// plausible_only: a NaN, infinite or huge float/double is a lie too (reason "<field> is nan").
+  DatagramWalk(const uint8_t* data, size_t size, bool plausible_only)
+      : data_(data), size_(static_cast<int64_t>(size)), plausible_only_(plausible_only) {}
 
   int64_t left() const { return size_ - pos_; }
   int64_t pos() const { return pos_; }
@@ -96,15 +96,15 @@ class DatagramWalk {
         }
         const bool is_real = field.kind == LcmFieldKind::kFloat || field.kind == LcmFieldKind::kDouble;
         if (field.fixed_count == 1 && !is_real) integer_values[i] = read_signed(here(), bytes);
-        if (is_real && finite_only_ && !all_finite(field, count, reason)) return false;
+        if (is_real && plausible_only_ && !all_plausible(field, count, reason)) return false;
         skip(count * bytes);
       }
     }
     return true;
   }
 
-  /// Whether the walk stopped at a NaN or infinite number (finite_only).
-  bool found_non_finite() const { return found_non_finite_; }
+  /// Whether the walk stopped at an implausible number (plausible_only).
+  bool found_implausible() const { return found_implausible_; }
 
  private:
   bool variable_count(const LcmSchema& schema, const LcmFieldSchema& field,
@@ -132,15 +132,18 @@ class DatagramWalk {
     return true;
   }
 
-  bool all_finite(const LcmFieldSchema& field, int64_t count, std::string& reason) {
+  bool all_plausible(const LcmFieldSchema& field, int64_t count, std::string& reason) {
     const int64_t bytes = element_bytes(field.kind);
     for (int64_t k = 0; k < count; ++k) {
-      const uint8_t* p = here() + k * bytes;
-      if (!is_non_finite(p, field.kind)) continue;
+      const double value = read_real(here() + k * bytes, field.kind);
+      if (std::fabs(value) <= kMaxPlausibleLcmMagnitude) continue;  // NaN fails too
       const bool scalar = field.fixed_count == 1 && field.length_field < 0;
-      reason = scalar ? fmt::format("{} is {}", field.name, non_finite_name(p, field.kind))
-                      : fmt::format("{}[{}] is {}", field.name, k, non_finite_name(p, field.kind));
-      found_non_finite_ = true;
+      const std::string what = std::isfinite(value)
+                                   ? fmt::format("{:g}, beyond +-{:g}", value, kMaxPlausibleLcmMagnitude)
+                                   : fmt::format("{}", value);
+      reason = scalar ? fmt::format("{} is {}", field.name, what)
+                      : fmt::format("{}[{}] is {}", field.name, k, what);
+      found_implausible_ = true;
       return false;
     }
     return true;
@@ -198,20 +201,20 @@ class DatagramWalk {
 
   const uint8_t* data_;
   int64_t size_;
-  bool finite_only_;
-  bool found_non_finite_ = false;
+  bool plausible_only_;
+  bool found_implausible_ = false;
   int64_t pos_ = 0;
 };
 
 }  // namespace
 
-std::string find_non_finite_lcm_number(const LcmSchema& schema, const uint8_t* data, size_t size) {
+std::string find_implausible_lcm_number(const LcmSchema& schema, const uint8_t* data, size_t size) {
   constexpr size_t kFingerprintBytes = 8;
   if (size < kFingerprintBytes) return {};
   DatagramWalk walk(data + kFingerprintBytes, size - kFingerprintBytes, true);
   std::string reason;
   // A structural lie is check_lcm_datagram's to report; only a number's is returned here.
-  if (!walk.walk_struct(schema, reason) && walk.found_non_finite()) return reason;
+  if (!walk.walk_struct(schema, reason) && walk.found_implausible()) return reason;
   return {};
 }
 

@@ -58,10 +58,16 @@ const LcmSchema& lcm_schema_of();
 /// only for the reason; reads at most size bytes.
 std::string check_lcm_datagram(const LcmSchema& schema, const uint8_t* data, size_t size);
 
-/// The first NaN or infinite float/double of a datagram check_lcm_datagram accepted, as
-/// "covariance[3] is NaN" (nested: "reflectors[2].range is inf"); empty when every number is
-/// finite. No refloc message carries a non-finite number on purpose (none is a sentinel), so a
-/// service refuses such a message whole before any field of it is used.
-std::string find_non_finite_lcm_number(const LcmSchema& schema, const uint8_t* data, size_t size);
+/// The largest magnitude a float/double of a refloc message may have. Every quantity we send
+/// (positions [m], angles, variances [m^2], times [s], RSSI, scores) stays nine orders of
+/// magnitude below it; a number beyond it (1e300, FLT_MAX) is an uninitialised or corrupted value.
+constexpr double kMaxPlausibleLcmMagnitude = 1e15;
+
+/// The first NaN, infinite or huge (|v| > kMaxPlausibleLcmMagnitude) float/double of a datagram
+/// check_lcm_datagram accepted, as "covariance[3] is nan" or "range is 1e+300, beyond +-1e+15"
+/// (nested: "reflectors[2].range is inf"); empty when every number is plausible. No refloc
+/// message carries such a number on purpose (none is a sentinel), so a service refuses such a
+/// message whole before any field of it is used.
+std::string find_implausible_lcm_number(const LcmSchema& schema, const uint8_t* data, size_t size);
 
 }  // namespace refloc

@@ -192,8 +192,8 @@ void ServiceRuntime::watch_heartbeats_for_duplicates() {
   lcm_->subscribeFunction("HEARTBEAT", &ServiceRuntime::on_heartbeat_heard, this);
 }
 
-std::string ServiceRuntime::non_finite_counter_name(const std::string& channel) {
-  std::string name = "nonfinite_" + channel;
+std::string ServiceRuntime::implausible_number_counter_name(const std::string& channel) {
+  std::string name = "implausible_numbers_" + channel;
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return name;

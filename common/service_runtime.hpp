@@ -45,8 +45,8 @@ class ServiceRuntime {
   ServiceRuntime& operator=(const ServiceRuntime&) = delete;
 
   /// Subscribe with a typed handler. Messages that fail to decode are counted in the
-  /// heartbeat (decode_errors) and skipped, as are well-formed ones holding a NaN or infinite
-  /// number (counter nonfinite_<channel>, lower case); the handler's run time feeds
+  /// heartbeat (decode_errors) and skipped, as are well-formed ones holding a NaN, infinite or
+  /// huge number (counter implausible_numbers_<channel>, lower case); the handler's run time feeds
   /// processing p50/p99.
   template <class Message>
   void subscribe(const std::string& channel, std::function<void(const Message&)> handler);
@@ -86,7 +86,7 @@ class ServiceRuntime {
     ServiceRuntime* runtime;
     std::function<void(const lcm::ReceiveBuffer*)> on_message;
   };
-  static std::string non_finite_counter_name(const std::string& channel);
+  static std::string implausible_number_counter_name(const std::string& channel);
   static void dispatch(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub);
   void run_due_timers();
   void watch_heartbeats_for_duplicates();
@@ -128,20 +128,20 @@ void ServiceRuntime::subscribe(const std::string& channel, std::function<void(co
   auto sub = std::make_unique<RawSubscription>();
   sub->runtime = this;
   const std::string channel_name = channel;
-  int64_t& non_finite_count = counter(non_finite_counter_name(channel));
-  sub->on_message = [this, channel_name, &non_finite_count, handler = std::move(handler),
+  int64_t& implausible_count = counter(implausible_number_counter_name(channel));
+  sub->on_message = [this, channel_name, &implausible_count, handler = std::move(handler),
                      log_limiter = DecodeErrorLogLimiter()](const lcm::ReceiveBuffer* rbuf) mutable {
     Message message;
-    // Bounds-checked first: a lying array length must not reach lcm-gen's resize(). A NaN
-    // anywhere refuses the whole message, so no handler ever sees one.
+    // Bounds-checked first: a lying array length must not reach lcm-gen's resize(). A NaN,
+    // inf or 1e300 anywhere refuses the whole message, so no handler ever sees one.
     const LcmDecodeResult decoded =
-        decode_lcm_bounded(rbuf->data, rbuf->data_size, message, LcmNumbers::kFiniteOnly);
+        decode_lcm_bounded(rbuf->data, rbuf->data_size, message, LcmNumbers::kPlausibleOnly);
     if (!decoded.ok) {
-      const int64_t in_all = decoded.non_finite ? ++non_finite_count : ++decode_errors_;
+      const int64_t in_all = decoded.implausible_number ? ++implausible_count : ++decode_errors_;
       if (const int64_t covered = log_limiter.on_error(monotonic_us()))
         spdlog::warn("{}: {} of {} bytes skipped: {} ({} refused since the last line, {} {} in all)",
                      channel_name, Message::getTypeName(), rbuf->data_size, decoded.reason, covered, in_all,
-                     decoded.non_finite ? "with a non-finite number" : "decode errors");
+                     decoded.implausible_number ? "with an implausible number" : "decode errors");
       return;
     }
     ++messages_in_;

@@ -1,7 +1,7 @@
 // The guarded decode where messages arrive: ServiceRuntime's subscriptions count a lying
 // datagram as a decode error and go on; the recorded sample log passes the bounds check
-// (the "// max N" comments did not change a fingerprint); a lie allocates nothing; a NaN or
-// infinite number anywhere in a message is named and, where a service consumes it, refused.
+// (the "// max N" comments did not change a fingerprint); a lie allocates nothing; a NaN,
+// infinite or huge number anywhere in a message is named and, where a service consumes it, refused.
 
 #include "common/lcm_bounded_decode.hpp"
 #include "common/service_runtime.hpp"
@@ -135,19 +135,19 @@ TEST(DecodeErrorLogLimiter, ClockGoingBackwardsDoesNotSilenceTheLog) {
   EXPECT_EQ(limiter.on_error(1'000), 1);
 }
 
-TEST(LcmFiniteNumbers, TheFirstNonFiniteNumberIsNamedWithItsPath) {
+TEST(LcmPlausibleNumbers, TheFirstNonFiniteOrHugeNumberIsNamedWithItsPath) {
   pose2d_t pose{};
   fill_lcm_sample(pose, 1);
   std::vector<uint8_t> bytes = encoded(pose);
-  EXPECT_EQ(find_non_finite_lcm_number(lcm_schema_of<pose2d_t>(), bytes.data(), bytes.size()), "");
+  EXPECT_EQ(find_implausible_lcm_number(lcm_schema_of<pose2d_t>(), bytes.data(), bytes.size()), "");
   pose.covariance[3] = std::numeric_limits<double>::quiet_NaN();
   bytes = encoded(pose);
-  EXPECT_EQ(find_non_finite_lcm_number(lcm_schema_of<pose2d_t>(), bytes.data(), bytes.size()),
-            "covariance[3] is NaN");
+  EXPECT_EQ(find_implausible_lcm_number(lcm_schema_of<pose2d_t>(), bytes.data(), bytes.size()),
+            "covariance[3] is nan");
   pose.covariance[3] = 0.0;
   pose.theta = -HUGE_VAL;
   bytes = encoded(pose);
-  EXPECT_EQ(find_non_finite_lcm_number(lcm_schema_of<pose2d_t>(), bytes.data(), bytes.size()),
+  EXPECT_EQ(find_implausible_lcm_number(lcm_schema_of<pose2d_t>(), bytes.data(), bytes.size()),
             "theta is -inf");
 
   reflector_detections_t detections{};
@@ -155,17 +155,21 @@ TEST(LcmFiniteNumbers, TheFirstNonFiniteNumberIsNamedWithItsPath) {
   ASSERT_EQ(detections.nreflectors, 3);
   detections.reflectors[1].mean_rssi = std::numeric_limits<float>::infinity();
   bytes = encoded(detections);
-  EXPECT_EQ(find_non_finite_lcm_number(lcm_schema_of<reflector_detections_t>(), bytes.data(), bytes.size()),
+  EXPECT_EQ(find_implausible_lcm_number(lcm_schema_of<reflector_detections_t>(), bytes.data(), bytes.size()),
             "reflectors[1].mean_rssi is inf");
-  // The largest finite values are numbers, not lies.
+  // Huge finite values are lies too (an uninitialised or corrupted number); 1e15 is not.
   detections.reflectors[1].mean_rssi = std::numeric_limits<float>::max();
-  detections.reflectors[2].range = std::numeric_limits<double>::max();
   bytes = encoded(detections);
-  EXPECT_EQ(find_non_finite_lcm_number(lcm_schema_of<reflector_detections_t>(), bytes.data(), bytes.size()),
+  EXPECT_EQ(find_implausible_lcm_number(lcm_schema_of<reflector_detections_t>(), bytes.data(), bytes.size()),
+            "reflectors[1].mean_rssi is 3.40282e+38, beyond +-1e+15");
+  detections.reflectors[1].mean_rssi = 1e15F;
+  detections.reflectors[2].range = -kMaxPlausibleLcmMagnitude;
+  bytes = encoded(detections);
+  EXPECT_EQ(find_implausible_lcm_number(lcm_schema_of<reflector_detections_t>(), bytes.data(), bytes.size()),
             "");
 }
 
-TEST(LcmFiniteNumbers, FiniteOnlyRefusesWhatAsSentDecodes) {
+TEST(LcmPlausibleNumbers, PlausibleOnlyRefusesWhatAsSentDecodes) {
   pose2d_t pose{};
   fill_lcm_sample(pose, 1);
   pose.x = std::numeric_limits<double>::quiet_NaN();
@@ -175,28 +179,29 @@ TEST(LcmFiniteNumbers, FiniteOnlyRefusesWhatAsSentDecodes) {
   EXPECT_TRUE(as_sent.ok) << as_sent.reason;
   EXPECT_TRUE(std::isnan(decoded.x));
   const LcmDecodeResult finite =
-      decode_lcm_bounded(bytes.data(), bytes.size(), decoded, LcmNumbers::kFiniteOnly);
+      decode_lcm_bounded(bytes.data(), bytes.size(), decoded, LcmNumbers::kPlausibleOnly);
   EXPECT_FALSE(finite.ok);
-  EXPECT_TRUE(finite.non_finite);
-  EXPECT_EQ(finite.reason, "x is NaN");
+  EXPECT_TRUE(finite.implausible_number);
+  EXPECT_EQ(finite.reason, "x is nan");
 }
 
-TEST(ServiceRuntimeBoundedDecode, NonFiniteMessageIsCountedPerChannelAndNeverHandled) {
+TEST(ServiceRuntimeBoundedDecode, ImplausibleNumberIsCountedPerChannelAndNeverHandled) {
   ServiceRuntime runtime("bounded_decode_test", "memq://");
   int delivered = 0;
   runtime.subscribe<pose2d_t>("LASER_POSE", [&](const pose2d_t&) { ++delivered; });
   pose2d_t pose{};
   fill_lcm_sample(pose, 1);
-  EXPECT_EQ(runtime.counter("nonfinite_laser_pose"), 0) << "the counter is there before the first lie";
-  for (const double bad : {std::numeric_limits<double>::quiet_NaN(), HUGE_VAL, -HUGE_VAL}) {
+  EXPECT_EQ(runtime.counter("implausible_numbers_laser_pose"), 0)
+      << "the counter is there before the first lie";
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(), HUGE_VAL, -HUGE_VAL, 1e300}) {
     pose.residual = bad;
     ASSERT_EQ(runtime.lcm().publish("LASER_POSE", &pose), 0);
     runtime.spin_once(100);
   }
   EXPECT_EQ(delivered, 0);
-  EXPECT_EQ(runtime.counter("nonfinite_laser_pose"), 3);
+  EXPECT_EQ(runtime.counter("implausible_numbers_laser_pose"), 4);
   EXPECT_EQ(runtime.decode_errors(), 0) << "a well-formed message is not a decode error";
-  pose.residual = 1e300;
+  pose.residual = 1e14;
   ASSERT_EQ(runtime.lcm().publish("LASER_POSE", &pose), 0);
   runtime.spin_once(100);
   EXPECT_EQ(delivered, 1);
