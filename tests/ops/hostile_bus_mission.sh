@@ -10,7 +10,7 @@
 #   mission    refloc-mission reaches every waypoint within tolerance (its own GROUND_TRUTH check),
 #              max true error < 20 mm as in restart_under_load.sh;
 #   alive      every program has the pid it started with and is RUNNING at the end;
-#   rss        peak RSS (VmHWM) of every service < 50 MB;
+#   rss        peak RSS (VmHWM) of every service < 50 MB (150 MB in a sanitized build);
 #   log        ops_hostile_log_check on the LCM log: no non-finite number on any channel
 #              (the peer's own datagrams excluded by the hashes it records: it writes to the
 #              stack's input channels, so the channel cannot tell), no OK POSE/LASER_POSE
@@ -31,6 +31,13 @@ refloc="$repo/deploy/refloc"
 mapfile -t programs < <("$refloc" list)
 mapfile -t services < <("$refloc" list --services)
 rss_limit_kb=$((50 * 1024))
+# AddressSanitizer's shadow memory and quarantine add tens of MB to every process (CI builds
+# sanitized): there the bound is 150 MB, still far below what a decoded lie allocated (4 GB).
+# The 50 MB figure is measured on a Release build (issue 11's note).
+if ldd "$build/bin/pose_solver" 2>/dev/null | grep -q libasan; then
+  rss_limit_kb=$((150 * 1024))
+  echo "sanitized build: peak RSS bound 150 MB instead of 50 MB"
+fi
 mission_pid="" peer_pid="" passed=false
 failures=()
 

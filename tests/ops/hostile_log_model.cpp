@@ -87,6 +87,13 @@ void read_stack_message(LogModel& model, const LogEventView& e) {
   }
 }
 
+/// NAV_GOAL and CMD_VEL stamps are read by nobody: the navigator and robot_sim act on a goal or
+/// a command when it arrives (robot_sim's command timeout runs on its own clock). A far stamp
+/// there is sent (the mission and the alive checks see it is harmless) but is no rejection.
+bool stamp_unused_by_consumer(const std::string& channel, const std::string& what) {
+  return (channel == "NAV_GOAL" || channel == "CMD_VEL") && what.find(".utime=") != std::string::npos;
+}
+
 std::vector<Phase> read_record(const std::string& path, std::set<uint64_t>& hashes) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot read the hostile peer's record");
@@ -103,6 +110,10 @@ std::vector<Phase> read_record(const std::string& path, std::set<uint64_t>& hash
     const int64_t t = std::stoll(utime);
     if (phases.empty() || phases.back().name != phase) phases.push_back({phase, t, t, {}});
     phases.back().last_utime = t;
+    if (stamp_unused_by_consumer(channel, what)) {
+      ++phases.back().harmless_sent;
+      continue;
+    }
     ++phases.back().sent_per_channel[channel];
   }
   return phases;

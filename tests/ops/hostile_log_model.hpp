@@ -37,7 +37,8 @@ struct Phase {
   std::string name;
   int64_t first_utime = 0;  ///< send time of its first datagram [us]
   int64_t last_utime = 0;
-  std::map<std::string, int> sent_per_channel;
+  std::map<std::string, int> sent_per_channel;  ///< what its consumer must refuse and count
+  int harmless_sent = 0;                        ///< stamps nobody reads (NAV_GOAL, CMD_VEL)
   int sent_on(const std::string& channel) const {
     const auto it = sent_per_channel.find(channel);
     return it == sent_per_channel.end() ? 0 : it->second;
