@@ -75,7 +75,7 @@ mkdir -p "$run_dir"
 export REFLOC_LOG_DIR="$run_dir"
 export REFLOC_RUN_DIR="$run_dir/supervisor"
 export REFLOC_LOG_SPLIT_MB=100000  # one log file however long the run
-export LCM_DEFAULT_URL="${LCM_DEFAULT_URL:-udpm://239.255.76.67:7667?ttl=0}"
+export LCM_DEFAULT_URL="${LCM_DEFAULT_URL:-udpm://239.255.76.67:7667?ttl=0&recv_buf_size=2097152}"
 export REFLOC_ARGS_lms100_driver="${REFLOC_ARGS_lms100_driver:---host 127.0.0.1}"
 
 mapfile -t services < <(deploy/refloc list --services)  # deploy/services.list

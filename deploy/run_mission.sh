@@ -34,7 +34,7 @@ if [ "$motion_compensation" = false ]; then
   sed -i 's/"motion_compensation": true/"motion_compensation": false/' "$REFLOC_CONFIG_DIR/reflector_extractor.json"
   grep -q '"motion_compensation": false' "$REFLOC_CONFIG_DIR/reflector_extractor.json"
 fi
-export LCM_DEFAULT_URL="${LCM_DEFAULT_URL:-udpm://239.255.76.67:7667?ttl=0}"
+export LCM_DEFAULT_URL="${LCM_DEFAULT_URL:-udpm://239.255.76.67:7667?ttl=0&recv_buf_size=2097152}"
 # The simulator's LMS100 emulator listens on loopback.
 export REFLOC_ARGS_lms100_driver="${REFLOC_ARGS_lms100_driver:---host 127.0.0.1}"
 
