@@ -179,7 +179,9 @@ TEST_F(SessionEmulatorTest, JunkBetweenTelegramsIsSkippedAndNoScanIsLost) {
   f.split_pieces = 4;
   f.split_gap_ms = 1;
   emulator_->faults().set_settings(f);
-  start_session();
+  // A 1 s scan timeout: on a loaded 2-core CI host a 60 ms pause of this process is
+  // ordinary, and the reconnect it causes is not what this test is about (CI saw one).
+  start_session(50.0);
   ASSERT_TRUE(sink_.wait_for(60, 10s));
   session_->join();
   EXPECT_GT(session_->counters().garbage_bytes.load(), 17u * 50u);
