@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <exception>
 #include <string>
+#include <utility>
 
 namespace refloc {
 
@@ -23,26 +24,19 @@ struct LcmDecodeResult {
   std::string reason;
 };
 
-/// kPlausibleOnly (NaN, inf and |v| > 1e15 refused, see find_implausible_lcm_number): what a
-/// service consumes (ServiceRuntime::subscribe); kAsSent: what a tool reading a log must show
-/// as it was, NaN included.
-enum class LcmNumbers { kAsSent, kPlausibleOnly };
-
-/// Check, then decode data into message. Never throws and never lets a declared length
-/// allocate more than the type's limits allow; message is unspecified when !ok.
+/// Check (numbers too with LcmNumbers::kPlausibleOnly, see check_lcm_datagram), then decode
+/// data into message. Never throws and never lets a declared length allocate more than the
+/// type's limits allow; message is unspecified when !ok.
 template <class Message>
 LcmDecodeResult decode_lcm_bounded(const void* data, size_t size, Message& message,
                                    LcmNumbers numbers = LcmNumbers::kAsSent) {
   LcmDecodeResult result;
   const auto* bytes = static_cast<const uint8_t*>(data);
-  result.reason = check_lcm_datagram(lcm_schema_of<Message>(), bytes, size);
-  if (!result.reason.empty()) return result;
-  if (numbers == LcmNumbers::kPlausibleOnly) {
-    result.reason = find_implausible_lcm_number(lcm_schema_of<Message>(), bytes, size);
-    if (!result.reason.empty()) {
-      result.implausible_number = true;
-      return result;
-    }
+  LcmDatagramVerdict verdict = check_lcm_datagram(lcm_schema_of<Message>(), bytes, size, numbers);
+  if (!verdict.reason.empty()) {
+    result.reason = std::move(verdict.reason);
+    result.implausible_number = verdict.implausible_number;
+    return result;
   }
   try {
     if (message.decode(data, 0, static_cast<int>(size)) < 0) {

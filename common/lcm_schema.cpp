@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <string>
+#include <utility>
 
 namespace refloc {
 namespace {
@@ -209,29 +211,40 @@ class DatagramWalk {
 }  // namespace
 
 std::string find_implausible_lcm_number(const LcmSchema& schema, const uint8_t* data, size_t size) {
-  constexpr size_t kFingerprintBytes = 8;
-  if (size < kFingerprintBytes) return {};
-  DatagramWalk walk(data + kFingerprintBytes, size - kFingerprintBytes, true);
-  std::string reason;
+  LcmDatagramVerdict verdict = check_lcm_datagram(schema, data, size, LcmNumbers::kPlausibleOnly);
   // A structural lie is check_lcm_datagram's to report; only a number's is returned here.
-  if (!walk.walk_struct(schema, reason) && walk.found_implausible()) return reason;
-  return {};
+  return verdict.implausible_number ? std::move(verdict.reason) : std::string();
 }
 
 std::string check_lcm_datagram(const LcmSchema& schema, const uint8_t* data, size_t size) {
+  return check_lcm_datagram(schema, data, size, LcmNumbers::kAsSent).reason;
+}
+
+LcmDatagramVerdict check_lcm_datagram(const LcmSchema& schema, const uint8_t* data, size_t size,
+                                      LcmNumbers numbers) {
   constexpr size_t kFingerprintBytes = 8;
-  if (size < kFingerprintBytes)
-    return fmt::format("{} bytes, shorter than the 8-byte fingerprint of {}", size, schema.type_name);
-  if (size > static_cast<size_t>(INT32_MAX)) return fmt::format("{} bytes, more than LCM can carry", size);
+  LcmDatagramVerdict verdict;
+  if (size < kFingerprintBytes) {
+    verdict.reason = fmt::format("{} bytes, shorter than the 8-byte fingerprint of {}", size, schema.type_name);
+    return verdict;
+  }
+  if (size > static_cast<size_t>(INT32_MAX)) {
+    verdict.reason = fmt::format("{} bytes, more than LCM can carry", size);
+    return verdict;
+  }
   const auto fingerprint = static_cast<uint64_t>(read_signed(data, 8));
-  if (fingerprint != schema.fingerprint)
-    return fmt::format("fingerprint {:016x} is not {}'s {:016x}", fingerprint, schema.type_name,
-                       schema.fingerprint);
-  DatagramWalk walk(data + kFingerprintBytes, size - kFingerprintBytes, false);
-  std::string reason;
-  if (!walk.walk_struct(schema, reason)) return reason;
-  if (walk.left() != 0) return fmt::format("{} bytes after the end of the {}", walk.left(), schema.type_name);
-  return {};
+  if (fingerprint != schema.fingerprint) {
+    verdict.reason = fmt::format("fingerprint {:016x} is not {}'s {:016x}", fingerprint, schema.type_name,
+                                 schema.fingerprint);
+    return verdict;
+  }
+  DatagramWalk walk(data + kFingerprintBytes, size - kFingerprintBytes, numbers == LcmNumbers::kPlausibleOnly);
+  if (!walk.walk_struct(schema, verdict.reason)) {
+    verdict.implausible_number = walk.found_implausible();
+    return verdict;
+  }
+  if (walk.left() != 0) verdict.reason = fmt::format("{} bytes after the end of the {}", walk.left(), schema.type_name);
+  return verdict;
 }
 
 }  // namespace refloc

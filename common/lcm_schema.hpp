@@ -58,6 +58,19 @@ const LcmSchema& lcm_schema_of();
 /// only for the reason; reads at most size bytes.
 std::string check_lcm_datagram(const LcmSchema& schema, const uint8_t* data, size_t size);
 
+/// kPlausibleOnly (NaN, inf and |v| > kMaxPlausibleLcmMagnitude refused as well): what a
+/// service consumes (ServiceRuntime::subscribe); kAsSent: what a tool reading a log must show
+/// as it was, NaN included.
+enum class LcmNumbers { kAsSent, kPlausibleOnly };
+
+/// check_lcm_datagram's verdict, with numbers judged too when asked: one walk of the bytes.
+struct LcmDatagramVerdict {
+  std::string reason;               ///< empty: one valid (and, if asked, plausible) message
+  bool implausible_number = false;  ///< refused for a number, not for its structure
+};
+LcmDatagramVerdict check_lcm_datagram(const LcmSchema& schema, const uint8_t* data, size_t size,
+                                      LcmNumbers numbers);
+
 /// The largest magnitude a float/double of a refloc message may have. Every quantity we send
 /// (positions [m], angles, variances [m^2], times [s], RSSI, scores) stays nine orders of
 /// magnitude below it; a number beyond it (1e300, FLT_MAX) is an uninitialised or corrupted value.

@@ -3,16 +3,16 @@
 // renderer draws beam by beam from the laser's true pose at each beam's time.
 
 #include "lms100_emulator/lms100_emulator.hpp"
-#include "robot_sim/pose_history.hpp"
+#include "world_renderer/scan_renderer.hpp"
 #include "robot_sim/sim_setup.hpp"
 
 #include <memory>
 
 namespace refloc {
 
-/// The emulated LMS100 for setup.world_path (not started), or null when there is no world.
-/// Throws ConfigError when the world file is bad.
-std::unique_ptr<Lms100Emulator> make_robot_laser(const SimSetup& setup,
-                                                 std::shared_ptr<const PoseHistory> laser_poses);
+/// The emulated LMS100 for setup.world_path (not started), or null when there is no world;
+/// map_T_laser_at gives the laser's true pose at a beam's time and is called from the
+/// emulator's thread. Throws ConfigError when the world file is bad.
+std::unique_ptr<Lms100Emulator> make_robot_laser(const SimSetup& setup, sim::PoseAtTime map_T_laser_at);
 
 }  // namespace refloc

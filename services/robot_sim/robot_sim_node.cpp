@@ -37,11 +37,31 @@ bool RobotSimNode::on_command(const BodyTwist& twist, int64_t receipt_utime) {
                                    twist.vx, twist.vy, twist.wz, speed_bound, yaw_bound)});
     return false;
   }
+  const std::lock_guard<std::mutex> lock(plant_mutex_);
   plant_.command(twist, receipt_utime);
   return true;
 }
 
 void RobotSimNode::advance(int64_t now_utime) {
+  const std::lock_guard<std::mutex> lock(plant_mutex_);
+  advance_locked(now_utime);
+}
+
+Pose2 RobotSimNode::map_T_laser_at(int64_t utime) {
+  {
+    const std::lock_guard<std::mutex> lock(plant_mutex_);
+    const int64_t plant_utime = plant_.utime();
+    if (utime > plant_utime + kMaxRenderLead_us ||
+        utime < plant_utime - static_cast<int64_t>(kLaserPoseHistory) * step_us_) {
+      ++laser_poses_outside_history_;
+    } else {
+      advance_locked(utime);
+    }
+  }
+  return laser_poses_->at(utime);
+}
+
+void RobotSimNode::advance_locked(int64_t now_utime) {
   while (plant_.utime() + step_us_ <= now_utime) {
     plant_.advance_to(plant_.utime() + step_us_);
     laser_poses_->add(plant_.utime(), plant_.map_T_robot() * robot_T_laser_);
@@ -49,7 +69,8 @@ void RobotSimNode::advance(int64_t now_utime) {
 }
 
 EncoderSample RobotSimNode::encoder_tick(int64_t now_utime) {
-  advance(now_utime);
+  const std::lock_guard<std::mutex> lock(plant_mutex_);
+  advance_locked(now_utime);
   EncoderSample sample;
   sample.utime = plant_.utime();
   sample.ticks = encoders_.counts(plant_.wheel_angles());
@@ -60,7 +81,8 @@ EncoderSample RobotSimNode::encoder_tick(int64_t now_utime) {
 }
 
 TruePose RobotSimNode::ground_truth_tick(int64_t now_utime) {
-  advance(now_utime);
+  const std::lock_guard<std::mutex> lock(plant_mutex_);
+  advance_locked(now_utime);
   return {plant_.utime(), plant_.map_T_robot()};
 }
 

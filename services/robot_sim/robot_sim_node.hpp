@@ -10,6 +10,13 @@
 // publisher, and 1e308 m/s would overflow the kinematics into NaN. Within that bound the
 // plant scales the four wheel speeds down to max_wheel_speed together, as a motor controller
 // saturates. CMD_VEL's stamp is not read: a command's age is judged from its receipt.
+//
+// The renderer's thread asks for the laser's pose at each beam's time through
+// map_T_laser_at(), which advances the plant itself when that time is beyond the last
+// tick: the ticks run on the LCM thread, and on a loaded host they lag by tens of
+// milliseconds, after which the renderer drew beams from a pose 60-150 ms old (seen in CI
+// as LASER_POSE 0.05-0.12 m off the truth at the scan's stamp: the simulator silently
+// wrong). One mutex orders the two threads' use of the plant.
 
 #include "common/node_event.hpp"
 #include "common/robot_config.hpp"
@@ -21,7 +28,9 @@
 
 #include <array>
 #include <cstdint>
+#include <atomic>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace refloc {
@@ -60,7 +69,18 @@ class RobotSimNode {
   /// advance() then the true pose.
   TruePose ground_truth_tick(int64_t now_utime);
 
-  /// The laser's true poses over time, shared with the renderer's thread.
+  /// The laser's true map pose at utime [us], for the renderer's thread: the plant is
+  /// advanced in whole steps up to utime first when it is behind (less than one step,
+  /// 1 ms by default, is then interpolated towards nothing: the newest step's pose).
+  /// A time more than kMaxRenderLead_us ahead of the plant, or older than the kept
+  /// history, is not simulated towards: the nearest kept pose is returned and counted in
+  /// laser_poses_outside_history().
+  Pose2 map_T_laser_at(int64_t utime);
+  /// Beam poses asked for outside what the simulation could give (see map_T_laser_at).
+  uint64_t laser_poses_outside_history() const { return laser_poses_outside_history_.load(); }
+  static constexpr int64_t kMaxRenderLead_us = 1'000'000;
+
+  /// The laser's true poses over time, as recorded so far.
   std::shared_ptr<const PoseHistory> laser_poses() const { return laser_poses_; }
   const MecanumPlant& plant() const { return plant_; }
 
@@ -74,6 +94,10 @@ class RobotSimNode {
   double max_speed_m_s_;       ///< body speed at max_wheel_speed
   double max_yaw_rate_rad_s_;  ///< yaw rate at max_wheel_speed
   std::vector<NodeEvent> events_;
+  std::mutex plant_mutex_;  ///< the LCM thread's ticks and the renderer's map_T_laser_at
+  std::atomic<uint64_t> laser_poses_outside_history_{0};
+
+  void advance_locked(int64_t now_utime);
 };
 
 }  // namespace refloc

@@ -47,6 +47,33 @@ TEST(RobotSimNode, LaserPoseIsRecordedAtEachStepInTheMapFrame) {
   EXPECT_NEAR(node.laser_poses()->at(truth.utime).x, truth.map_T_robot.x + 0.3, 1e-9);
 }
 
+TEST(RobotSimNode, RendererAheadOfTheTicksGetsTheSimulatedPoseNotTheLastTicked) {
+  // The LCM thread's ticks lag on a loaded host; the beam's pose must still be the
+  // pose at the beam's time (it was the last ticked one: 60-150 ms stale in CI).
+  RobotConfig robot;
+  robot.robot_T_laser = Pose2{0.3, 0.0, 0.0};
+  RobotSimNode node(robot, plant_setup(), kStart);
+  node.on_command({0.5, 0.0, 0.0}, kStart);
+  node.advance(kStart + 200'000);
+  const double ticked_x = node.plant().map_T_robot().x;
+  const Pose2 beam = node.map_T_laser_at(kStart + 300'000);  // no tick for 100 ms
+  EXPECT_EQ(node.plant().utime(), kStart + 300'000);
+  EXPECT_NEAR(beam.x, node.plant().map_T_robot().x + 0.3, 1e-9);
+  EXPECT_GT(beam.x - 0.3 - ticked_x, 0.04);  // 0.5 m/s x 0.1 s, minus the ramp-up
+  EXPECT_EQ(node.laser_poses_outside_history(), 0u);
+  // A later tick does not move the plant back or twice.
+  EXPECT_EQ(node.ground_truth_tick(kStart + 300'500).utime, kStart + 300'000);
+}
+
+TEST(RobotSimNode, BeamTimesTheSimulationCannotReachAreCountedNotSimulated) {
+  RobotSimNode node(RobotConfig{}, plant_setup(), kStart);
+  node.map_T_laser_at(kStart + RobotSimNode::kMaxRenderLead_us + 1);  // a broken clock
+  EXPECT_EQ(node.plant().utime(), kStart);
+  node.advance(kStart + 3'000'000);
+  node.map_T_laser_at(kStart);  // older than the 2 s kept
+  EXPECT_EQ(node.laser_poses_outside_history(), 2u);
+}
+
 TEST(RobotSimNode, CommandTimeoutIsReportedOnceWhenTheCommandGoesStale) {
   RobotSimNode node(RobotConfig{}, plant_setup(), kStart);
   EXPECT_FALSE(node.encoder_tick(kStart + 10'000).command_timed_out);  // stale from the start: no edge
