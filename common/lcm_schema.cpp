@@ -225,7 +225,8 @@ LcmDatagramVerdict check_lcm_datagram(const LcmSchema& schema, const uint8_t* da
   constexpr size_t kFingerprintBytes = 8;
   LcmDatagramVerdict verdict;
   if (size < kFingerprintBytes) {
-    verdict.reason = fmt::format("{} bytes, shorter than the 8-byte fingerprint of {}", size, schema.type_name);
+    verdict.reason =
+        fmt::format("{} bytes, shorter than the 8-byte fingerprint of {}", size, schema.type_name);
     return verdict;
   }
   if (size > static_cast<size_t>(INT32_MAX)) {
@@ -238,12 +239,14 @@ LcmDatagramVerdict check_lcm_datagram(const LcmSchema& schema, const uint8_t* da
                                  schema.fingerprint);
     return verdict;
   }
-  DatagramWalk walk(data + kFingerprintBytes, size - kFingerprintBytes, numbers == LcmNumbers::kPlausibleOnly);
+  DatagramWalk walk(data + kFingerprintBytes, size - kFingerprintBytes,
+                    numbers == LcmNumbers::kPlausibleOnly);
   if (!walk.walk_struct(schema, verdict.reason)) {
     verdict.implausible_number = walk.found_implausible();
     return verdict;
   }
-  if (walk.left() != 0) verdict.reason = fmt::format("{} bytes after the end of the {}", walk.left(), schema.type_name);
+  if (walk.left() != 0)
+    verdict.reason = fmt::format("{} bytes after the end of the {}", walk.left(), schema.type_name);
   return verdict;
 }
 

@@ -45,7 +45,8 @@ int run(const ServiceCommandLine& cli, const SimOverrides& overrides) {
   ServiceRuntime runtime("robot_sim", cli.lcm_url);
   RobotSimNode node(robot, setup.plant, now_utime());
 
-  const std::unique_ptr<Lms100Emulator> laser = make_robot_laser(setup, [&node](int64_t utime) { return node.map_T_laser_at(utime); });
+  const std::unique_ptr<Lms100Emulator> laser =
+      make_robot_laser(setup, [&node](int64_t utime) { return node.map_T_laser_at(utime); });
   if (laser) {
     laser->start();
     spdlog::info("LMS100 emulator on {}:{} rendering {}", setup.emulator.bind_address, laser->port(),
@@ -54,7 +55,8 @@ int run(const ServiceCommandLine& cli, const SimOverrides& overrides) {
       const Lms100EmulatorStats s = laser->stats();
       runtime.counter("laser_clients_accepted") = static_cast<int64_t>(s.clients_accepted);
       runtime.counter("laser_scans_sent") = static_cast<int64_t>(s.scan_telegrams_sent);
-      runtime.counter("laser_poses_outside_history") = static_cast<int64_t>(node.laser_poses_outside_history());
+      runtime.counter("laser_poses_outside_history") =
+          static_cast<int64_t>(node.laser_poses_outside_history());
     });
   } else {
     spdlog::info("no world: running without the emulated LMS100");

@@ -3,8 +3,8 @@
 // renderer draws beam by beam from the laser's true pose at each beam's time.
 
 #include "lms100_emulator/lms100_emulator.hpp"
-#include "world_renderer/scan_renderer.hpp"
 #include "robot_sim/sim_setup.hpp"
+#include "world_renderer/scan_renderer.hpp"
 
 #include <memory>
 

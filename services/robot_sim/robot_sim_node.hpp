@@ -27,8 +27,8 @@
 #include "robot_sim/sim_setup.hpp"
 
 #include <array>
-#include <cstdint>
 #include <atomic>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -70,8 +70,8 @@ class RobotSimNode {
   TruePose ground_truth_tick(int64_t now_utime);
 
   /// The laser's true map pose at utime [us], for the renderer's thread: the plant is
-  /// advanced in whole steps up to utime first when it is behind (less than one step,
-  /// 1 ms by default, is then interpolated towards nothing: the newest step's pose).
+  /// advanced in whole steps up to utime first when it is behind; the last part of a step
+  /// (under 1 ms by default) is not simulated, so such a beam gets the newest step's pose.
   /// A time more than kMaxRenderLead_us ahead of the plant, or older than the kept
   /// history, is not simulated towards: the nearest kept pose is returned and counted in
   /// laser_poses_outside_history().

@@ -59,7 +59,8 @@ TEST(RobotSimNode, RendererAheadOfTheTicksGetsTheSimulatedPoseNotTheLastTicked) 
   const Pose2 beam = node.map_T_laser_at(kStart + 300'000);  // no tick for 100 ms
   EXPECT_EQ(node.plant().utime(), kStart + 300'000);
   EXPECT_NEAR(beam.x, node.plant().map_T_robot().x + 0.3, 1e-9);
-  EXPECT_GT(beam.x - 0.3 - ticked_x, 0.04);  // 0.5 m/s x 0.1 s, minus the ramp-up
+  // 100 ms of acceleration-limited motion (22.8 mm): well beyond the last ticked pose.
+  EXPECT_GT(beam.x - 0.3 - ticked_x, 0.02);
   EXPECT_EQ(node.laser_poses_outside_history(), 0u);
   // A later tick does not move the plant back or twice.
   EXPECT_EQ(node.ground_truth_tick(kStart + 300'500).utime, kStart + 300'000);
