@@ -1,4 +1,4 @@
-// The NEES of refloc-eval's honest-uncertainty columns on samples with known statistics.
+// The NEES of the honest-uncertainty figures (refloc-eval, refloc-mission) on samples with known statistics.
 #include "fix_consistency.hpp"
 
 #include <gtest/gtest.h>
