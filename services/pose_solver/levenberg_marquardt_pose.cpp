@@ -1,8 +1,5 @@
 #include "pose_solver/levenberg_marquardt_pose.hpp"
 
-#include <Eigen/Cholesky>
-#include <Eigen/LU>
-
 #include <cmath>
 
 namespace refloc {
@@ -47,74 +44,6 @@ Eigen::Matrix3d pose_information(const std::vector<PointObservation>& observatio
     h += j.transpose() * observations[i].information * j;
   }
   return h;
-}
-
-LevenbergMarquardtResult refine_pose(const std::vector<PointObservation>& observations,
-                                     const std::vector<char>* use, const Pose2& robot_T_laser,
-                                     const Pose2& initial_map_T_robot, int max_iterations,
-                                     double convergence_step) {
-  LevenbergMarquardtResult result;
-  result.map_T_robot = initial_map_T_robot;
-  Eigen::Vector2d e;
-  Eigen::Matrix<double, 2, 3> j;
-  const auto evaluate = [&](const Pose2& pose, Eigen::Matrix3d* h, Eigen::Vector3d* g) {
-    double cost = 0.0;
-    if (h) h->setZero();
-    if (g) g->setZero();
-    for (size_t i = 0; i < observations.size(); ++i) {
-      if (use && !(*use)[i]) continue;
-      observation_residual_and_jacobian(observations[i], pose, robot_T_laser, e, j);
-      const Eigen::Vector2d we = observations[i].information * e;
-      cost += e.dot(we);
-      if (h) *h += j.transpose() * observations[i].information * j;
-      if (g) *g += j.transpose() * we;
-    }
-    return cost;
-  };
-
-  Eigen::Matrix3d h;
-  Eigen::Vector3d g;
-  double cost = evaluate(result.map_T_robot, &h, &g);
-  double lambda = 1e-6;  // starts as Gauss-Newton; grows only when a step fails to reduce the cost
-  for (int it = 0; it < max_iterations; ++it) {
-    result.iterations = it + 1;
-    Eigen::Matrix3d damped = h;
-    damped.diagonal() *= 1.0 + lambda;
-    // e = z - h(x) and J = -dh/dx: the Gauss-Newton step is -(J^T W J)^-1 J^T W e.
-    const Eigen::Vector3d step = -damped.ldlt().solve(g);
-    if (!step.allFinite()) return result;
-    const Pose2 candidate{result.map_T_robot.x + step(0), result.map_T_robot.y + step(1),
-                          wrap_angle(result.map_T_robot.theta + step(2))};
-    const double candidate_cost = evaluate(candidate, nullptr, nullptr);
-    if (candidate_cost <= cost) {
-      result.map_T_robot = candidate;
-      cost = evaluate(candidate, &h, &g);
-      lambda = std::max(1e-9, lambda * 0.1);
-      if (step.norm() < convergence_step) {
-        result.converged = true;
-        break;
-      }
-    } else {
-      lambda *= 10.0;
-      if (lambda > 1e8) {
-        // No descent direction left: we are at the minimum to numerical precision.
-        result.converged = true;
-        break;
-      }
-    }
-  }
-  if (!result.converged && result.iterations >= max_iterations) {
-    // A step still shrinking at the limit is as good as converged when it is tiny.
-    result.converged = g.norm() < 1e-6 * (1.0 + cost);
-  }
-  result.cost = cost;
-  const Eigen::FullPivLU<Eigen::Matrix3d> lu(h);
-  if (!lu.isInvertible()) {
-    result.converged = false;
-    return result;
-  }
-  result.covariance = lu.inverse();
-  return result;
 }
 
 }  // namespace refloc

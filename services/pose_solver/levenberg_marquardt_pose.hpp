@@ -1,7 +1,8 @@
 #pragma once
-// Joint Levenberg-Marquardt refinement of map_T_robot from detections of known
-// reflectors: residual e_i = laser_p_i - laser_T_robot robot_T_map map_p_i,
-// weighted by the detection's information matrix; covariance (J^T W J)^-1.
+// The observation model of the Levenberg-Marquardt pose refinement: residual
+// e_i = laser_p_i - laser_T_robot robot_T_map map_p_i of one detection of a known reflector,
+// weighted by the detection's information matrix, and its Jacobian. The one LM loop over it
+// (with or without the range bias) is refine_pose_and_range_bias (range_bias_refinement.hpp).
 
 #include "pose_solver/point_observation.hpp"
 
@@ -12,20 +13,6 @@
 #include <vector>
 
 namespace refloc {
-
-struct LevenbergMarquardtResult {
-  bool converged = false;
-  Pose2 map_T_robot;
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  ///< (J^T W J)^-1 at the solution
-  double cost = 0.0;                                         ///< sum of e^T W e over the observations used
-  int iterations = 0;
-};
-
-/// Refine map_T_robot from initial using the observations with use[i] != 0 (all if use is null).
-LevenbergMarquardtResult refine_pose(const std::vector<PointObservation>& observations,
-                                     const std::vector<char>* use, const Pose2& robot_T_laser,
-                                     const Pose2& initial_map_T_robot, int max_iterations,
-                                     double convergence_step);
 
 /// Residual e = laser_p - predicted and its Jacobian de/d(x, y, theta) of map_T_robot.
 void observation_residual_and_jacobian(const PointObservation& o, const Pose2& map_T_robot,
