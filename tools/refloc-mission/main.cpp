@@ -1,14 +1,18 @@
 // refloc-mission: send a mission (NAV_GOAL) to the running stack, report true waypoint errors,
-// POSE/LASER_POSE RMSE and odometry drift. MissionMonitor records and decides; this converts LCM.
+// POSE/LASER_POSE RMSE and NEES, odometry drift and pose_solver's range bias. MissionMonitor
+// records and decides; this converts LCM.
 
 #include "common/clock.hpp"
 #include "common/guarded_main.hpp"
+#include "common/lcm_conversions.hpp"
 #include "common/service_runtime.hpp"
+#include "heartbeat_from_lcm.hpp"
 #include "mission_monitor.hpp"
 #include "mission_summary.hpp"
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
+#include <refloc/heartbeat_t.hpp>
 #include <refloc/nav_goal_t.hpp>
 #include <refloc/nav_status_t.hpp>
 #include <refloc/odometry_t.hpp>
@@ -37,9 +41,14 @@ nav_goal_t to_lcm(const GoalRequest& g) {
 void subscribe(ServiceRuntime& rt, MissionMonitor& m) {
   const auto ok = [](const pose2d_t& p) { return p.status == pose2d_t::STATUS_OK; };
   rt.subscribe<pose2d_t>("GROUND_TRUTH", [&m](const pose2d_t& p) { m.on_ground_truth(p.utime, to_pose(p)); });
-  rt.subscribe<pose2d_t>("POSE", [&m, ok](const pose2d_t& p) { m.on_pose(p.utime, to_pose(p), ok(p)); });
-  rt.subscribe<pose2d_t>("LASER_POSE",
-                         [&m, ok](const pose2d_t& p) { m.on_laser_pose(p.utime, to_pose(p), ok(p)); });
+  rt.subscribe<pose2d_t>("POSE", [&m, ok](const pose2d_t& p) {
+    m.on_pose(p.utime, to_pose(p), ok(p), covariance_from_lcm(p.covariance));
+  });
+  rt.subscribe<pose2d_t>("LASER_POSE", [&m, ok](const pose2d_t& p) {
+    m.on_laser_pose(p.utime, to_pose(p), ok(p), covariance_from_lcm(p.covariance));
+  });
+  rt.subscribe<heartbeat_t>("HEARTBEAT",
+                            [&m](const heartbeat_t& h) { m.on_heartbeat(heartbeat_from_lcm(h)); });
   rt.subscribe<odometry_t>("ODOMETRY", [&m](const odometry_t& o) {
     m.on_odometry(o.utime, {o.x, o.y, o.theta}, o.distance);
   });

@@ -7,6 +7,25 @@
 #include <algorithm>
 
 namespace refloc {
+namespace {
+
+/// The NEES figures of one channel; their expected values when the covariance is honest are
+/// 2 and 1 % (position, 2 dof), 1 and 1 % (heading).
+nlohmann::json consistency_json(const ConsistencySummary& s) {
+  return {{"fixes", s.fixes},
+          {"unusable_covariances", s.unusable_covariances},
+          {"position_nees_mean", s.position_nees_mean},
+          {"position_outside_99", s.position_outside_99},
+          {"heading_nees_mean", s.heading_nees_mean},
+          {"heading_outside_99", s.heading_outside_99}};
+}
+
+/// Metres as millimetres, or null when never heard.
+nlohmann::json optional_mm(const std::optional<double>& value_m) {
+  return value_m ? nlohmann::json(*value_m * 1000.0) : nlohmann::json(nullptr);
+}
+
+}  // namespace
 
 MissionMonitor::MissionMonitor(Mission mission, const MissionProgressConfig& progress)
     : mission_(std::move(mission)), progress_(mission_.waypoints.size(), progress) {
@@ -20,13 +39,27 @@ void MissionMonitor::on_ground_truth(int64_t utime, const Pose2& map_T_robot) {
   has_truth_ = true;
 }
 
-void MissionMonitor::on_pose(int64_t utime, const Pose2& map_T_robot, bool ok) {
+void MissionMonitor::on_pose(int64_t utime, const Pose2& map_T_robot, bool ok,
+                             const Eigen::Matrix3d& covariance) {
   if (ok) localized_ = true;
-  if (driving_ && ok) pose_.add(utime, map_T_robot);
+  if (!driving_ || !ok) return;
+  pose_.add(utime, map_T_robot);
+  pose_fixes_.push_back({utime, map_T_robot, covariance});
 }
 
-void MissionMonitor::on_laser_pose(int64_t utime, const Pose2& map_T_robot, bool ok) {
-  if (driving_ && ok) laser_pose_.add(utime, map_T_robot);
+void MissionMonitor::on_laser_pose(int64_t utime, const Pose2& map_T_robot, bool ok,
+                                   const Eigen::Matrix3d& covariance) {
+  if (!driving_ || !ok) return;
+  laser_pose_.add(utime, map_T_robot);
+  laser_fixes_.push_back({utime, map_T_robot, covariance});
+}
+
+void MissionMonitor::on_heartbeat(const HeartbeatSample& heartbeat) {
+  if (heartbeat.service != "pose_solver") return;
+  for (const auto& [name, value] : heartbeat.counters) {
+    if (name == "range_bias_um") range_bias_m_ = static_cast<double>(value) * 1e-6;
+    if (name == "range_bias_sigma_um") range_bias_sigma_m_ = static_cast<double>(value) * 1e-6;
+  }
 }
 
 void MissionMonitor::on_odometry(int64_t utime, const Pose2& odom_T_robot, double distance_m) {
@@ -128,6 +161,11 @@ nlohmann::json MissionMonitor::report(const std::string& log_file) const {
   j["pose_samples"] = pose_stats.count;
   j["laser_pose_rmse_mm"] = laser_stats.rmse_xy_m * 1000.0;
   j["laser_pose_samples"] = laser_stats.count;
+  j["pose_nees"] = consistency_json(consistency_against_truth(pose_fixes_, truth_, drive_start_utime_));
+  j["laser_pose_nees"] =
+      consistency_json(consistency_against_truth(laser_fixes_, truth_, drive_start_utime_));
+  j["range_bias_mm"] = optional_mm(range_bias_m_);
+  j["range_bias_sigma_mm"] = optional_mm(range_bias_sigma_m_);
   j["odometry_drift_mm"] = odometry_drift_m() * 1000.0;
   j["duration_s"] = static_cast<double>(drive_end_utime_ - drive_start_utime_) * 1e-6;
   j["odometry_restarts"] = odometry_restarts_;

@@ -1,13 +1,16 @@
 #pragma once
 // What refloc-mission watches while a mission runs, without LCM: GROUND_TRUTH, and
-// POSE / LASER_POSE / ODOMETRY recorded while driving; the navigator's progress
-// (MissionProgress: which goal to send when); the true arrival error at each
-// waypoint; the timeout; and the report (JSON, plot series).
+// POSE / LASER_POSE (with their covariances) / ODOMETRY recorded while driving; the
+// navigator's progress (MissionProgress: which goal to send when); the true arrival error
+// at each waypoint; pose_solver's range bias estimate from HEARTBEAT; the timeout; and the
+// report (JSON, plot series).
 
+#include "heartbeat_table.hpp"
 #include "mission_file.hpp"
 #include "mission_progress.hpp"
 #include "path_plot_svg.hpp"
 #include "trajectory.hpp"
+#include "trajectory_consistency.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -43,9 +46,12 @@ class MissionMonitor {
   explicit MissionMonitor(Mission mission, const MissionProgressConfig& progress = {});
 
   void on_ground_truth(int64_t utime, const Pose2& map_T_robot);
-  /// POSE; `ok`: status OK. The first OK pose means localized.
-  void on_pose(int64_t utime, const Pose2& map_T_robot, bool ok);
-  void on_laser_pose(int64_t utime, const Pose2& map_T_robot, bool ok);
+  /// POSE; `ok`: status OK. The first OK pose means localized. covariance: the message's,
+  /// of (x [m], y [m], theta [rad]), for the NEES against GROUND_TRUTH.
+  void on_pose(int64_t utime, const Pose2& map_T_robot, bool ok, const Eigen::Matrix3d& covariance);
+  void on_laser_pose(int64_t utime, const Pose2& map_T_robot, bool ok, const Eigen::Matrix3d& covariance);
+  /// HEARTBEAT of any service; pose_solver's gauges range_bias_um / range_bias_sigma_um are kept.
+  void on_heartbeat(const HeartbeatSample& heartbeat);
   /// ODOMETRY; a distance below the previous one is a restarted odometry service, whose
   /// new frame starts the drift measurement again.
   void on_odometry(int64_t utime, const Pose2& odom_T_robot, double distance_m);
@@ -90,6 +96,8 @@ class MissionMonitor {
   MissionProgress progress_;
   std::vector<WaypointResult> results_;
   Trajectory truth_, pose_, laser_pose_, odometry_;
+  std::vector<StampedFix> pose_fixes_, laser_fixes_;         ///< pose_ and laser_pose_ with covariances
+  std::optional<double> range_bias_m_, range_bias_sigma_m_;  ///< pose_solver's latest [m]
   Pose2 latest_truth_;
   bool has_truth_ = false;
   bool localized_ = false;

@@ -19,6 +19,20 @@ std::string format_waypoint_reached(size_t index, const WaypointResult& result) 
                      result.error_xy_m * 1000.0, result.error_heading_rad * 180.0 / M_PI);
 }
 
+namespace {
+
+/// "<channel> NEES vs GROUND_TRUTH: position <mean> (2 if honest), <share> % outside 99 %; heading ...".
+std::string format_nees(const std::string& channel, const nlohmann::json& nees) {
+  return fmt::format(
+      "{} NEES vs GROUND_TRUTH: position {:.2f} (honest: 2), {:.1f} % outside 99 %; heading {:.2f} "
+      "(honest: 1), {:.1f} % outside 99 %; {} fixes ({} without a usable covariance)\n",
+      channel, nees["position_nees_mean"].get<double>(), 100.0 * nees["position_outside_99"].get<double>(),
+      nees["heading_nees_mean"].get<double>(), 100.0 * nees["heading_outside_99"].get<double>(),
+      nees["fixes"].get<int>(), nees["unusable_covariances"].get<int>());
+}
+
+}  // namespace
+
 std::string format_mission_summary(const nlohmann::json& report) {
   std::string out = fmt::format("\nwaypoints reached: {}/{}\n", report["waypoints_reached"].get<size_t>(),
                                 report["waypoints_total"].get<size_t>());
@@ -29,6 +43,11 @@ std::string format_mission_summary(const nlohmann::json& report) {
                      report["pose_rmse_mm"].get<double>(), report["pose_samples"].get<size_t>());
   out += fmt::format("LASER_POSE RMSE vs GROUND_TRUTH: {:.1f} mm over {} fixes\n",
                      report["laser_pose_rmse_mm"].get<double>(), report["laser_pose_samples"].get<size_t>());
+  out += format_nees("POSE", report["pose_nees"]);
+  out += format_nees("LASER_POSE", report["laser_pose_nees"]);
+  if (!report["range_bias_mm"].is_null() && !report["range_bias_sigma_mm"].is_null())
+    out += fmt::format("pose_solver range bias estimate: {:+.1f} mm (sigma {:.1f} mm)\n",
+                       report["range_bias_mm"].get<double>(), report["range_bias_sigma_mm"].get<double>());
   out += fmt::format("odometry-only drift over the run: {:.1f} mm{}\n",
                      report["odometry_drift_mm"].get<double>(),
                      report["odometry_restarts"].get<int>() > 0 ? " (since the last odometry restart)" : "");

@@ -16,8 +16,8 @@ std::string format_goal_sent(const GoalRequest& goal, size_t nwaypoints);
 /// "waypoint <i> reached: true error <mm> mm, <deg> deg".
 std::string format_waypoint_reached(size_t index, const WaypointResult& result);
 
-/// Waypoints reached, the largest true waypoint error, POSE and LASER_POSE RMSE, the
-/// odometry drift and an abort reason, from MissionMonitor::report().
+/// Waypoints reached, the largest true waypoint error, POSE and LASER_POSE RMSE and NEES,
+/// pose_solver's range bias, the odometry drift and an abort reason, from MissionMonitor::report().
 std::string format_mission_summary(const nlohmann::json& report);
 
 /// Where refloc-mission writes its results (empty: not written).

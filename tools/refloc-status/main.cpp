@@ -7,6 +7,7 @@
 #include "common/lcm_bounded_decode.hpp"
 #include "common/lcm_url.hpp"
 #include "common/service_runtime.hpp"
+#include "heartbeat_from_lcm.hpp"
 #include "heartbeat_table.hpp"
 #include "refresh_schedule.hpp"
 #include "service_instances.hpp"
@@ -31,24 +32,6 @@ void on_signal(int) { g_stop = 1; }
 
 double monotonic_s() { return static_cast<double>(monotonic_us()) * 1e-6; }
 
-HeartbeatSample to_sample(const heartbeat_t& m) {
-  HeartbeatSample s;
-  s.service = m.service;
-  s.pid = m.pid;
-  s.state = m.state;
-  s.state_detail = m.state_detail;
-  s.utime = m.utime;
-  s.uptime_us = m.uptime_us;
-  s.messages_in = m.messages_in;
-  s.messages_out = m.messages_out;
-  s.decode_errors = m.decode_errors;
-  s.processing_p50_us = m.processing_p50_us;
-  s.processing_p99_us = m.processing_p99_us;
-  const size_t n = std::min(m.counter_names.size(), m.counter_values.size());
-  for (size_t i = 0; i < n; ++i) s.counters.emplace_back(m.counter_names[i], m.counter_values[i]);
-  return s;
-}
-
 struct Listener {
   HeartbeatTable table;
   int64_t decode_errors = 0;
@@ -66,7 +49,7 @@ struct Listener {
       ++self->decode_errors;
       return;
     }
-    const HeartbeatSample sample = to_sample(m);
+    const HeartbeatSample sample = heartbeat_from_lcm(m);
     self->table.update(sample, monotonic_s());
     self->instances.update(sample, monotonic_s());
   }

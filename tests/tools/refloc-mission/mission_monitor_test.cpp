@@ -1,7 +1,8 @@
 // MissionMonitor, what refloc-mission records and decides without LCM: poses only while
 // driving, the true error at each waypoint when the navigator reports it, the goal to
-// send (and resend after a navigator restart), the timeout, odometry restarts, and the
-// report and summary the scripts read.
+// send (and resend after a navigator restart), the timeout, odometry restarts, the NEES
+// of the published covariances, pose_solver's range bias, and the report and summary the
+// scripts read.
 
 #include "mission_monitor.hpp"
 #include "mission_summary.hpp"
@@ -13,8 +14,10 @@ namespace refloc {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 constexpr int64_t kSecond = 1'000'000;
+const Eigen::Matrix3d kCovariance = Eigen::Vector3d(25e-6, 25e-6, 1e-4).asDiagonal();  // 5 mm, 10 mrad
 
 Mission two_waypoints() {
   Mission m;
@@ -26,17 +29,17 @@ Mission two_waypoints() {
 
 TEST(MissionMonitor, LocalizedByTheFirstOkPoseAndRecordsPosesOnlyWhileDriving) {
   MissionMonitor m(two_waypoints());
-  m.on_pose(1, {0, 0, 0}, false);
+  m.on_pose(1, {0, 0, 0}, false, kCovariance);
   EXPECT_FALSE(m.localized());
-  m.on_pose(2, {0, 0, 0}, true);
+  m.on_pose(2, {0, 0, 0}, true, kCovariance);
   EXPECT_TRUE(m.localized());
   m.on_ground_truth(2, {0, 0, 0});
   m.start_driving(10, 0);
   for (int64_t t = 10; t <= 20; t += 5) {
     m.on_ground_truth(t, {0.0, 0.0, 0.0});
-    m.on_pose(t, {0.003, 0.004, 0.0}, true);  // 5 mm off
-    m.on_laser_pose(t, {0.0, 0.0, 0.0}, true);
-    m.on_laser_pose(t, {9.0, 9.0, 0.0}, false);  // not OK: not counted
+    m.on_pose(t, {0.003, 0.004, 0.0}, true, kCovariance);     // 5 mm off: NEES 1
+    m.on_laser_pose(t, {0.0, 0.0, 0.01}, true, kCovariance);  // 10 mrad: heading NEES 1
+    m.on_laser_pose(t, {9.0, 9.0, 0.0}, false, kCovariance);  // not OK: not counted
   }
   m.stop_driving(20);
   const auto r = m.report("refloc.0");
@@ -45,6 +48,37 @@ TEST(MissionMonitor, LocalizedByTheFirstOkPoseAndRecordsPosesOnlyWhileDriving) {
   EXPECT_EQ(r["laser_pose_samples"], 3);
   EXPECT_NEAR(r["laser_pose_rmse_mm"].get<double>(), 0.0, 1e-9);
   EXPECT_EQ(r["log_file"], "refloc.0");
+  EXPECT_EQ(r["pose_nees"]["fixes"], 3);
+  EXPECT_NEAR(r["pose_nees"]["position_nees_mean"].get<double>(), 1.0, 1e-9);
+  EXPECT_NEAR(r["pose_nees"]["heading_nees_mean"].get<double>(), 0.0, 1e-9);
+  EXPECT_EQ(r["laser_pose_nees"]["fixes"], 3);
+  EXPECT_NEAR(r["laser_pose_nees"]["position_nees_mean"].get<double>(), 0.0, 1e-9);
+  EXPECT_NEAR(r["laser_pose_nees"]["heading_nees_mean"].get<double>(), 1.0, 1e-9);
+  EXPECT_THAT(
+      format_mission_summary(r),
+      HasSubstr("POSE NEES vs GROUND_TRUTH: position 1.00 (honest: 2), 0.0 % outside 99 %; heading 0.00"));
+}
+
+TEST(MissionMonitor, ReportsPoseSolversLatestRangeBiasFromItsHeartbeat) {
+  MissionMonitor m(two_waypoints());
+  EXPECT_TRUE(m.report("")["range_bias_mm"].is_null()) << "never heard";
+  EXPECT_THAT(format_mission_summary(m.report("")), Not(HasSubstr("range bias")));
+  HeartbeatSample other;
+  other.service = "pose_fusion";
+  other.counters = {{"range_bias_um", 999}};
+  m.on_heartbeat(other);
+  EXPECT_TRUE(m.report("")["range_bias_mm"].is_null()) << "only pose_solver's gauge counts";
+  HeartbeatSample solver;
+  solver.service = "pose_solver";
+  solver.counters = {{"scans", 10}, {"range_bias_um", 29'500}, {"range_bias_sigma_um", 400}};
+  m.on_heartbeat(solver);
+  solver.counters = {{"range_bias_um", -30'125}, {"range_bias_sigma_um", 350}};
+  m.on_heartbeat(solver);
+  const auto r = m.report("");
+  EXPECT_NEAR(r["range_bias_mm"].get<double>(), -30.125, 1e-9);
+  EXPECT_NEAR(r["range_bias_sigma_mm"].get<double>(), 0.35, 1e-9);
+  EXPECT_THAT(format_mission_summary(r),
+              HasSubstr("pose_solver range bias estimate: -30.1 mm (sigma 0.3 mm)"));
 }
 
 TEST(MissionMonitor, FirstGoalCarriesEveryWaypointAndTheMissionsTolerances) {
