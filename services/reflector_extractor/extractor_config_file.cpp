@@ -1,15 +1,13 @@
 #include "reflector_extractor/extractor_config_file.hpp"
 
+#include "common/angles.hpp"
 #include "common/json_config.hpp"
+
+#include <fmt/format.h>
 
 #include <cmath>
 
 namespace refloc {
-namespace {
-
-constexpr double kDegToRad = M_PI / 180.0;
-
-}  // namespace
 
 ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& c) {
   ExtractorServiceConfig out;
@@ -22,6 +20,21 @@ ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& c) {
   out.odometry_channel = c.string("/odometry_channel", out.odometry_channel);
   out.motion_compensation = c.boolean("/motion_compensation", out.motion_compensation);
   out.odometry_max_age = c.number("/odometry_max_age_s", out.odometry_max_age, 0.0, 10.0);
+  out.laser_pose_channel = c.string("/laser_pose_channel", out.laser_pose_channel);
+  FixVelocityConfig& f = out.fix_velocity;
+  f.enabled = c.boolean("/fix_velocity/enabled", f.enabled);
+  f.window_s = c.positive_number("/fix_velocity/window_s", f.window_s, 2.0, "0 would keep no fix to fit");
+  f.max_age_s = c.number("/fix_velocity/max_age_s", f.max_age_s, 0.0, 10.0);
+  f.min_fixes = static_cast<int>(c.integer("/fix_velocity/min_fixes", f.min_fixes, 2, 100));
+  f.min_span_s = c.positive_number("/fix_velocity/min_span_s", f.min_span_s, 2.0,
+                                   "0 would fit a velocity to fixes at one instant");
+  f.max_rms_residual_m = c.positive_number("/fix_velocity/max_rms_residual_m", f.max_rms_residual_m, 1.0,
+                                           "0 would refuse every fit of noisy fixes");
+  if (f.min_span_s > f.window_s)
+    c.fail("/fix_velocity/min_span_s",
+           fmt::format("{} s is longer than /fix_velocity/window_s {} s: no window "
+                       "could ever hold it",
+                       f.min_span_s, f.window_s));
 
   const std::string scale = c.choice("/rssi_scale", "auto", {"auto", "native", "8bit_in_16bit"});
   out.rssi_scale.mode = scale == "auto"     ? RssiScaleConfig::Mode::kAuto

@@ -4,6 +4,7 @@
 // ExtractorConfig::paper() when "mode" is "paper"); values are range-checked.
 
 #include "reflector_extractor/extractor.hpp"
+#include "reflector_extractor/fix_velocity_estimator.hpp"
 #include "reflector_extractor/rssi_scale.hpp"
 
 #include <string>
@@ -17,9 +18,13 @@ struct ExtractorServiceConfig {
   std::string input_channel = "LMS100_SCAN";
   std::string output_channel = "REFLECTORS";
   std::string odometry_channel = "ODOMETRY";
+  /// The solver's fixes, the motion source while ODOMETRY is absent or stale.
+  std::string laser_pose_channel = "LASER_POSE";
   bool motion_compensation = true;
   /// Odometry older than this (by message utime, relative to the scan) is not used [s].
   double odometry_max_age = 0.2;
+  /// The twist fitted to recent LASER_POSE fixes ("fix_velocity": {...}).
+  FixVelocityConfig fix_velocity;
   /// How a 16-bit RSSI channel is read ("rssi_scale": auto / native / 8bit_in_16bit).
   RssiScaleConfig rssi_scale;
   /// Accepted scans without any reflector for longer than this degrade the state [s].

@@ -74,4 +74,17 @@ InputFault check_odometry_twist(const OdometrySample& sample) {
   return {};
 }
 
+InputFault check_laser_pose(const LaserPoseFix& fix) {
+  const Pose2& p = fix.map_T_robot;
+  if (!all_finite({p.x, p.y, p.theta})) return nonfinite(fmt::format("pose ({}, {}, {})", p.x, p.y, p.theta));
+  if (!finite_abs_at_most(p.x, LaserPoseBounds::kMaxAbsCoordinate_m) ||
+      !finite_abs_at_most(p.y, LaserPoseBounds::kMaxAbsCoordinate_m) ||
+      !finite_abs_at_most(p.theta, LaserPoseBounds::kMaxAbsTheta))
+    return out_of_bounds(fmt::format("pose ({} m, {} m, {} rad)", p.x, p.y, p.theta));
+  if (!is_usable_covariance(fix.covariance, LaserPoseBounds::kMaxVariance))
+    return {"covariance", fmt::format("covariance diagonal ({}, {}, {})", fix.covariance(0, 0),
+                                      fix.covariance(1, 1), fix.covariance(2, 2))};
+  return {};
+}
+
 }  // namespace refloc

@@ -7,6 +7,7 @@
 #include "common/input_stream_checks.hpp"
 #include "common/laser_scan.hpp"
 #include "common/odometry_sample.hpp"
+#include "reflector_extractor/fix_velocity_estimator.hpp"
 
 namespace refloc {
 
@@ -36,5 +37,17 @@ struct TwistBounds {
 
 /// The twist is finite and within TwistBounds (the only part of ODOMETRY the extractor reads).
 InputFault check_odometry_twist(const OdometrySample& sample);
+
+/// The bounds of a LASER_POSE fix the motion compensation may fit a twist to.
+struct LaserPoseBounds {
+  static constexpr double kMaxAbsCoordinate_m = 1e4;  ///< no site is 10 km across
+  static constexpr double kMaxAbsTheta = 6.3;         ///< [rad]; LASER_POSE is wrapped to (-pi, pi]
+  static constexpr double kMaxVariance = 1e6;         ///< [m^2, rad^2]: the solver's "no information"
+};
+
+/// x, y, theta finite ("nonfinite") and within LaserPoseBounds ("out_of_bounds"); the
+/// covariance symmetric, positive semi-definite, no variance above kMaxVariance
+/// ("covariance"). Only OK fixes are judged (the others are not used).
+InputFault check_laser_pose(const LaserPoseFix& fix);
 
 }  // namespace refloc

@@ -9,6 +9,7 @@
 
 #include <refloc/laser_scan_t.hpp>
 #include <refloc/odometry_t.hpp>
+#include <refloc/pose2d_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 
 namespace refloc {
@@ -19,6 +20,14 @@ inline OdometrySample odometry_twist_from_message(const odometry_t& msg) {
   sample.utime = msg.utime;
   sample.twist = {msg.vx, msg.vy, msg.wz};
   return sample;
+}
+
+/// LASER_POSE as motion compensation reads it (only status OK fixes are used).
+inline LaserPoseFix laser_pose_from_message(const pose2d_t& msg) {
+  return {msg.utime,
+          {msg.x, msg.y, msg.theta},
+          covariance_from_lcm(msg.covariance),
+          msg.status == pose2d_t::STATUS_OK};
 }
 
 /// LMS100_SCAN as it came, judged by nobody here: every check is ExtractorNode's

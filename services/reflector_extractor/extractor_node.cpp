@@ -6,7 +6,7 @@ namespace refloc {
 
 ExtractorNode::ExtractorNode(const ExtractorServiceConfig& config, const Pose2& robot_T_laser)
     : extractor_(config.extractor),
-      compensator_(config.motion_compensation, config.odometry_max_age, robot_T_laser),
+      compensator_(config.motion_compensation, config.odometry_max_age, robot_T_laser, config.fix_velocity),
       rssi_scale_(config.rssi_scale),
       no_reflector_(config.no_reflector_timeout, config.extractor.energy_threshold_8bit) {
   output_.detections.reserve(64);
@@ -21,6 +21,18 @@ const std::vector<NodeEvent>& ExtractorNode::on_odometry(const OdometrySample& s
     compensator_.on_odometry(sample);
   }
   return odometry_events_;
+}
+
+const std::vector<NodeEvent>& ExtractorNode::on_laser_pose(const LaserPoseFix& fix, int64_t host_utime) {
+  laser_pose_events_.clear();
+  if (!fix.ok) return laser_pose_events_;  // no pose to fit; not a fault
+  if (const InputFault fault = check_laser_pose(fix)) {
+    laser_pose_events_.push_back(laser_pose_checks_.rejected(fault.reason, fault.detail, host_utime));
+  } else if (laser_pose_checks_.stamp_accepted(fix.utime, host_utime, laser_pose_events_)) {
+    laser_pose_checks_.accepted(host_utime);
+    compensator_.on_laser_pose(fix);
+  }
+  return laser_pose_events_;
 }
 
 const ExtractorOutput& ExtractorNode::on_scan(const LaserScan& scan, int64_t host_utime) {
@@ -44,6 +56,15 @@ const ExtractorOutput& ExtractorNode::on_scan(const LaserScan& scan, int64_t hos
   output_.stats = extractor_.stats();
   no_reflector_.observe(table_, output_.stats, output_.detections.size(), host_utime, output_.events);
   output_.compensation = compensator_.apply(output_.detections, scan.utime);
+  if (output_.compensation != last_compensation_ || !compensation_chosen_) {
+    // The first choice is logged once; a change of source is counted and its line
+    // rate-limited by that counter (a source flapping scan by scan logs once a second).
+    output_.events.push_back({compensation_chosen_ ? "motion_source_changes" : nullptr,
+                              NodeEvent::Level::kInfo,
+                              compensator_.describe(output_.compensation, scan.utime)});
+    compensation_chosen_ = true;
+    last_compensation_ = output_.compensation;
+  }
   return output_;
 }
 

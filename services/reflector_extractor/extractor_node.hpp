@@ -1,9 +1,9 @@
 #pragma once
-// The reflector_extractor service without LCM: odometry and scans in, in time order;
-// per scan the detections (motion-compensated when odometry is fresh), the extraction
-// statistics and the heartbeat counters to bump. main.cpp and refloc-eval both run this.
-// Every message is judged first (extractor_input_checks, then its stamp and, for scans,
-// the scan counter: common/input_stream_checks.hpp); a rejected one changes nothing.
+// The reflector_extractor service without LCM: odometry, laser fixes and scans in, in time
+// order; per scan the detections (motion-compensated with fresh odometry, else with the
+// twist of recent LASER_POSE fixes), the extraction statistics and the heartbeat counters. main.cpp and
+// refloc-eval both run this. Every message is judged first (extractor_input_checks, then its stamp and, for
+// scans, the scan counter: common/input_stream_checks.hpp); a rejected one changes nothing.
 
 #include "common/input_stream_checks.hpp"
 #include "common/node_event.hpp"
@@ -37,7 +37,11 @@ struct ExtractorOutput {
   void for_each_counter(Bump&& bump) const {
     if (!accepted) return;
     bump("gap_scan_messages", missing_scans);
-    if (compensation == CompensationOutcome::kNoFreshOdometry) bump("scans_without_fresh_odometry", 1);
+    if (compensation == CompensationOutcome::kOdometry) bump("scans_compensated_odometry", 1);
+    if (compensation == CompensationOutcome::kFixes) bump("scans_compensated_fixes", 1);
+    if (compensation == CompensationOutcome::kNoMotionSource) bump("scans_without_motion_source", 1);
+    if (compensation == CompensationOutcome::kFixes || compensation == CompensationOutcome::kNoMotionSource)
+      bump("scans_without_fresh_odometry", 1);
     bump("rejected_too_few_beams", stats.rejected_too_few_beams);
     bump("rejected_shape", stats.rejected_too_wide + stats.rejected_too_narrow + stats.rejected_not_round +
                                stats.rejected_radius + stats.rejected_fit_failed);
@@ -67,6 +71,9 @@ class ExtractorNode {
   /// One ODOMETRY sample at host wall-clock time host_utime [us]; the events of a rejected
   /// one (an invalid twist is never used for compensation). Valid until the next call.
   const std::vector<NodeEvent>& on_odometry(const OdometrySample& sample, int64_t host_utime);
+  /// One LASER_POSE at host_utime [us] (motion compensation without odometry); fixes that
+  /// are not OK are ignored, a rejected one returns its event. Valid until the next call.
+  const std::vector<NodeEvent>& on_laser_pose(const LaserPoseFix& fix, int64_t host_utime);
   /// One scan at host_utime [us]; the reference stays valid until the next call.
   const ExtractorOutput& on_scan(const LaserScan& scan, int64_t host_utime);
 
@@ -76,6 +83,9 @@ class ExtractorNode {
     return on_odometry(sample, sample.utime);
   }
   const ExtractorOutput& on_scan(const LaserScan& scan) { return on_scan(scan, scan.utime); }
+  const std::vector<NodeEvent>& on_laser_pose(const LaserPoseFix& fix) {
+    return on_laser_pose(fix, fix.utime);
+  }
 
   /// The state at host_utime [us], for a heartbeat; input_channel names the scans' channel.
   ExtractorHealth health(int64_t messages_in, int64_t host_utime, const std::string& input_channel) const;
@@ -93,8 +103,12 @@ class ExtractorNode {
   BeamTable table_;
   // 1 s too: 0.1 s refused 150 good scans of a loaded hostile-bus run (issue 11).
   InputStreamChecks scan_checks_{"scan", chain_stream_stamp_limits()};
-  InputStreamChecks odometry_checks_{"odometry", chain_stream_stamp_limits()};  // from mecanum_odometry
+  InputStreamChecks odometry_checks_{"odometry", chain_stream_stamp_limits()};      // from mecanum_odometry
+  InputStreamChecks laser_pose_checks_{"laser_pose", chain_stream_stamp_limits()};  // from pose_solver
   std::vector<NodeEvent> odometry_events_;
+  std::vector<NodeEvent> laser_pose_events_;
+  bool compensation_chosen_ = false;  ///< a scan was compensated (or not) already
+  CompensationOutcome last_compensation_ = CompensationOutcome::kOff;
   ExtractorOutput output_;
 };
 

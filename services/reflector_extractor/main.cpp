@@ -14,6 +14,7 @@
 #include <refloc/heartbeat_t.hpp>
 #include <refloc/laser_scan_t.hpp>
 #include <refloc/odometry_t.hpp>
+#include <refloc/pose2d_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 
 #include <string>
@@ -35,13 +36,19 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   spdlog::info("mode {}, energy threshold {:.0f}, radius {:.3f} m, motion compensation {}",
                config.extractor.mode == ExtractorConfig::Mode::kPaper ? "paper" : "default",
                config.extractor.energy_threshold_8bit, config.extractor.reflector_radius,
-               config.motion_compensation ? "on" : "off");
+               !config.motion_compensation ? "off"
+               : config.fix_velocity.enabled
+                   ? "on (" + config.odometry_channel + ", else " + config.laser_pose_channel + " fixes)"
+                   : "on (" + config.odometry_channel + " only)");
 
   ServiceRuntime runtime("reflector_extractor", lcm_url);
   LaserScan scan;
   reflector_detections_t out;
   runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
     report_events(runtime, node.on_odometry(odometry_twist_from_message(msg), now_utime()));
+  });
+  runtime.subscribe<pose2d_t>(config.laser_pose_channel, [&](const pose2d_t& msg) {
+    report_events(runtime, node.on_laser_pose(laser_pose_from_message(msg), now_utime()));
   });
   runtime.subscribe<laser_scan_t>(config.input_channel, [&](const laser_scan_t& msg) {
     scan_from_message(msg, scan);

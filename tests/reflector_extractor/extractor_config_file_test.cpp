@@ -29,6 +29,48 @@ TEST(ExtractorConfigFile, DeployedFileIsValidAndEqualsTheCodeDefaults) {
   EXPECT_DOUBLE_EQ(c.no_reflector_timeout, ExtractorServiceConfig{}.no_reflector_timeout);
   EXPECT_EQ(c.input_channel, "LMS100_SCAN");
   EXPECT_EQ(c.output_channel, "REFLECTORS");
+  EXPECT_EQ(c.laser_pose_channel, "LASER_POSE");
+  const FixVelocityConfig fix_defaults;
+  EXPECT_EQ(c.fix_velocity.enabled, fix_defaults.enabled);
+  EXPECT_DOUBLE_EQ(c.fix_velocity.window_s, fix_defaults.window_s);
+  EXPECT_DOUBLE_EQ(c.fix_velocity.max_age_s, fix_defaults.max_age_s);
+  EXPECT_EQ(c.fix_velocity.min_fixes, fix_defaults.min_fixes);
+  EXPECT_DOUBLE_EQ(c.fix_velocity.min_span_s, fix_defaults.min_span_s);
+  EXPECT_DOUBLE_EQ(c.fix_velocity.max_rms_residual_m, fix_defaults.max_rms_residual_m);
+}
+
+TEST(ExtractorConfigFile, FixVelocityKeysAreReadAndASpanLongerThanTheWindowNamesItsKey) {
+  const JsonConfig file(nlohmann::json{{"laser_pose_channel", "LASER_POSE_2"},
+                                       {"fix_velocity",
+                                        {{"enabled", false},
+                                         {"window_s", 0.5},
+                                         {"max_age_s", 0.1},
+                                         {"min_fixes", 8},
+                                         {"min_span_s", 0.2},
+                                         {"max_rms_residual_m", 0.01}}}},
+                        "t");
+  const ExtractorServiceConfig c = parse_extractor_service_config(file);
+  EXPECT_NO_THROW(file.reject_unknown_keys());
+  EXPECT_EQ(c.laser_pose_channel, "LASER_POSE_2");
+  EXPECT_FALSE(c.fix_velocity.enabled);
+  EXPECT_DOUBLE_EQ(c.fix_velocity.window_s, 0.5);
+  EXPECT_DOUBLE_EQ(c.fix_velocity.max_age_s, 0.1);
+  EXPECT_EQ(c.fix_velocity.min_fixes, 8);
+  EXPECT_DOUBLE_EQ(c.fix_velocity.min_span_s, 0.2);
+  EXPECT_DOUBLE_EQ(c.fix_velocity.max_rms_residual_m, 0.01);
+  try {
+    parse_extractor_service_config(
+        JsonConfig(nlohmann::json{{"fix_velocity", {{"window_s", 0.1}, {"min_span_s", 0.2}}}}, "x.json"));
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("x.json: /fix_velocity/min_span_s"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(
+      parse_extractor_service_config(JsonConfig(nlohmann::json{{"fix_velocity", {{"min_fixes", 1}}}}, "t")),
+      ConfigError);
+  EXPECT_THROW(
+      parse_extractor_service_config(JsonConfig(nlohmann::json{{"fix_velocity", {{"window_s", 0.0}}}}, "t")),
+      ConfigError);
 }
 
 TEST(ExtractorConfigFile, PaperModeStartsFromThePaperPreset) {

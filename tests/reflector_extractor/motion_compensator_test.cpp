@@ -24,7 +24,7 @@ TEST(MotionCompensator, OdometryWithinMaxAgeEitherSideOfTheScanCompensatesExactl
   for (int64_t scan_utime : {800'000, 1'000'000, 1'200'000}) {
     std::vector<ReflectorDetection> got = one_detection(scan_utime + 10'000);
     std::vector<ReflectorDetection> expected = got;
-    EXPECT_EQ(compensator.apply(got, scan_utime), CompensationOutcome::kCompensated) << scan_utime;
+    EXPECT_EQ(compensator.apply(got, scan_utime), CompensationOutcome::kOdometry) << scan_utime;
     compensate_motion(expected, scan_utime, kDriving.twist, kMount);
     EXPECT_EQ(got[0].laser_p_center, expected[0].laser_p_center);
     EXPECT_EQ(got[0].covariance, expected[0].covariance);
@@ -36,7 +36,7 @@ TEST(MotionCompensator, OdometryOlderOrNewerThanMaxAgeLeavesDetectionsAsMeasured
   compensator.on_odometry(kDriving);
   for (int64_t scan_utime : {799'999, 1'200'001}) {
     std::vector<ReflectorDetection> got = one_detection(scan_utime + 10'000);
-    EXPECT_EQ(compensator.apply(got, scan_utime), CompensationOutcome::kNoFreshOdometry);
+    EXPECT_EQ(compensator.apply(got, scan_utime), CompensationOutcome::kNoMotionSource);
     EXPECT_EQ(got[0].laser_p_center, Eigen::Vector2d(3.0, 1.0));
   }
 }
@@ -45,7 +45,7 @@ TEST(MotionCompensator, NoOdometryYetIsNotFresh) {
   MotionCompensator compensator(true, 0.2, kMount);
   std::vector<ReflectorDetection> got = one_detection(10'000);
   EXPECT_FALSE(compensator.fresh(0));
-  EXPECT_EQ(compensator.apply(got, 0), CompensationOutcome::kNoFreshOdometry);
+  EXPECT_EQ(compensator.apply(got, 0), CompensationOutcome::kNoMotionSource);
 }
 
 TEST(MotionCompensator, DisabledNeverCompensatesNorCountsMissingOdometry) {
