@@ -2,37 +2,66 @@
 # The main job, run inside a private network namespace by deploy/demo.sh:
 # start robot_sim and every service under supervisord (deploy/refloc), record
 # an LCM log, drive the demo mission, print the true arrival error at each
-# waypoint and the localization RMSE, stop everything.
+# waypoint, the localization RMSE and NEES, stop everything.
 #   deploy/run_mission.sh [--build-dir DIR] [--mission FILE] [--json FILE] [--no-motion-compensation]
+#                         [--range-offset-mm N] [--log-dir DIR]
+# --log-dir DIR: the run's logs, LCM log and edited configs (default logs/demo-<time>).
+# --range-offset-mm N: the simulated LMS100 adds N mm (-1000..1000) to every range (its error
+# model's render/sensor/range_offset in robot_sim.json); pose_solver estimates the bias.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 build_dir=build
 mission=deploy/config/mission_demo.json
 json=""
+run_dir=""
 motion_compensation=true
+range_offset_mm=""
+range_offset_given=false
 while [ $# -gt 0 ]; do
   case "$1" in
     --build-dir) build_dir="$2"; shift 2 ;;
     --mission) mission="$2"; shift 2 ;;
     --json) json="$2"; shift 2 ;;
+    --log-dir) run_dir="$2"; shift 2 ;;
     --no-motion-compensation) motion_compensation=false; shift ;;
-    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
+    --range-offset-mm) range_offset_given=true; range_offset_mm="${2-}"; shift $(($# > 1 ? 2 : 1)) ;;
+    -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
     *) echo "run_mission: unknown argument '$1' (see --help)" >&2; exit 64 ;;
   esac
 done
 
-run_dir="$root/logs/demo-$(date +%Y%m%d-%H%M%S)"
+if [ "$range_offset_given" = true ]; then
+  if ! [[ "$range_offset_mm" =~ ^[-+]?[0-9]+([.][0-9]+)?$ ]] ||
+    ! awk -v v="$range_offset_mm" 'BEGIN { exit !(v >= -1000 && v <= 1000) }'; then
+    echo "run_mission: --range-offset-mm wants a number of millimetres in -1000..1000, got '$range_offset_mm'" >&2
+    exit 64
+  fi
+fi
+
+[ -n "$run_dir" ] || run_dir="$root/logs/demo-$(date +%Y%m%d-%H%M%S)"
 mkdir -p "$run_dir"
-export REFLOC_BUILD="$root/$build_dir"
+run_dir="$(cd "$run_dir" && pwd)"
+case "$build_dir" in /*) export REFLOC_BUILD="$build_dir" ;; *) export REFLOC_BUILD="$root/$build_dir" ;; esac
 export REFLOC_LOG_DIR="$run_dir"
 export REFLOC_RUN_DIR="$run_dir/supervisor"
-if [ "$motion_compensation" = false ]; then
-  # Same configs, but the extractor leaves detections where their beams saw them.
+if [ "$motion_compensation" = false ] || [ -n "$range_offset_mm" ]; then
+  # Same configs, edited in the run's copy.
   export REFLOC_CONFIG_DIR="$run_dir/config"
-  cp -r "$root/deploy/config" "$REFLOC_CONFIG_DIR"
+  mkdir -p "$REFLOC_CONFIG_DIR"
+  cp -r "$root/deploy/config/." "$REFLOC_CONFIG_DIR/"
+fi
+if [ "$motion_compensation" = false ]; then
+  # The extractor leaves detections where their beams saw them.
   sed -i 's/"motion_compensation": true/"motion_compensation": false/' "$REFLOC_CONFIG_DIR/reflector_extractor.json"
   grep -q '"motion_compensation": false' "$REFLOC_CONFIG_DIR/reflector_extractor.json"
+fi
+if [ -n "$range_offset_mm" ]; then
+  # The simulated sensor's systematic range offset (robot_sim.json render/sensor/range_offset [m]).
+  sim_config="$REFLOC_CONFIG_DIR/robot_sim.json"
+  jq --argjson mm "${range_offset_mm#+}" '.render.sensor.range_offset = ($mm / 1000)' "$sim_config" >"$sim_config.new"
+  mv "$sim_config.new" "$sim_config"
+  echo "== simulated LMS100 range offset: $range_offset_mm mm ($sim_config)"
 fi
 export LCM_DEFAULT_URL="${LCM_DEFAULT_URL:-udpm://239.255.76.67:7667?ttl=0&recv_buf_size=2097152}"
 # The simulator's LMS100 emulator listens on loopback.
