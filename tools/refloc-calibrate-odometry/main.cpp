@@ -20,11 +20,15 @@ int main(int argc, char** argv) {
                  "x_m,y_m,theta_rad to read LASER_POSE with (refloc-calibrate-mount's)")
       ->delimiter(',')
       ->expected(3);
-  app.add_option("--method", o.method, "direct: every fix, segments with own start poses; windows: fix pairs")
-      ->check(CLI::IsMember({"direct", "windows"}))
+  app.add_option("--method", o.method,
+                 "direct: every fix, odometry integrated step by step, segments with own start poses; "
+                 "direct-endpoint: refloc-calibrate-mount's model (end pose scaled, approximate on arcs); "
+                 "windows: fix pairs")
+      ->check(CLI::IsMember({"direct", "direct-endpoint", "windows"}))
       ->capture_default_str();
-  app.add_option("--segment-s", o.segment_s, "direct: segment length")
-      ->check(CLI::Range(0.2, 60.0))
+  app.add_option("--segment-s", o.segment_s,
+                 "direct: segment length [s] (each segment has its own start pose)")
+      ->check(CLI::Range(0.2, 3600.0))
       ->capture_default_str();
   app.add_option("--json", o.json_path, "also write the result to this JSON file");
   app.add_option("--encoders-channel", o.channels.encoders)->capture_default_str();

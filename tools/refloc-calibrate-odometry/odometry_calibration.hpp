@@ -39,6 +39,7 @@ struct OdometryCalibrationResult {
   double geometry_scale = 1.0;                           ///< s_k: true (lx + ly) / configured
   Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();  ///< of (s_r, s_k)
   double chi2_per_dof = 0.0;
+  double correlation_factor = 1.0;  ///< direct: covariance inflation for correlated fix errors
   size_t windows = 0;
   double total_rotation_rad = 0.0;
   double total_translation_m = 0.0;

@@ -3,6 +3,7 @@
 #include "common/json_config.hpp"
 #include "common/robot_config.hpp"
 #include "odometry_calibration.hpp"
+#include "odometry_direct.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -27,6 +28,12 @@ int run_odometry_calibration(const OdometryCommandOptions& o) {
              counts.undecodable);
   const Pose2 mount = o.robot_T_laser.value_or(robot.robot_T_laser);
   if (o.method == "direct") {
+    DirectOdometryOptions direct;
+    direct.segment_s = o.segment_s;
+    return report_odometry_calibration(
+        o, robot, calibrate_odometry_exact(drive, robot, robot.robot_T_laser, mount, direct));
+  }
+  if (o.method == "direct-endpoint") {
     const OdometryCalibrationResult r =
         calibrate_odometry_direct(drive, robot, robot.robot_T_laser, mount, o.segment_s);
     return report_odometry_calibration(o, robot, r);
@@ -59,7 +66,8 @@ int report_odometry_calibration(const OdometryCommandOptions& o, const RobotConf
              (r.radius_scale - 1.0) * 100.0);
   fmt::print("  (lx + ly) scale    = {:.5f} +- {:.5f} ({:+.3f} %)\n", r.geometry_scale, sk,
              (r.geometry_scale - 1.0) * 100.0);
-  fmt::print("chi2/dof = {:.3f}; {}\n", r.chi2_per_dof, r.message);
+  fmt::print("chi2/dof = {:.3f}, correlation factor {:.2f}; {}\n", r.chi2_per_dof, r.correlation_factor,
+             r.message);
   fmt::print("robot.json (only lx + ly is observable; lx, ly keep their ratio):\n");
   fmt::print(
       "  \"wheel_radius_m\": {:.6f},\n  \"half_wheelbase_lx_m\": {:.6f},\n  \"half_track_ly_m\": {:.6f},\n",
@@ -73,6 +81,7 @@ int report_odometry_calibration(const OdometryCommandOptions& o, const RobotConf
                               {"half_wheelbase_lx_m", fixed.half_wheelbase_lx},
                               {"half_track_ly_m", fixed.half_track_ly},
                               {"chi2_per_dof", r.chi2_per_dof},
+                              {"correlation_factor", r.correlation_factor},
                               {"windows", r.windows}};
     std::ofstream out(o.json_path);
     out << j.dump(2) << "\n";

@@ -3,6 +3,7 @@
 // (lx + ly) scales, print them and the corrected robot.json values.
 
 #include "calibration_log.hpp"
+#include "odometry_direct.hpp"
 
 #include <optional>
 #include <string>
@@ -16,8 +17,10 @@ struct OdometryCommandOptions {
   /// The mount to read LASER_POSE with, when it differs from the robot file's (e.g. the output
   /// of refloc-calibrate-mount on the same drive); LASER_POSE was computed with the file's.
   std::optional<Pose2> robot_T_laser;
-  std::string method = "direct";  ///< "direct" (every fix, segments) or "windows" (fix pairs)
-  double segment_s = 4.0;         ///< direct: segment length [s]
+  /// "direct" (every fix, odometry integrated step by step with the scales, odometry_direct.hpp),
+  /// "direct-endpoint" (refloc-calibrate-mount's model: the end pose scaled) or "windows" (fix pairs)
+  std::string method = "direct";
+  double segment_s = DirectOdometryOptions{}.segment_s;  ///< direct, direct-endpoint: segment length [s]
   CalibrationChannels channels;
   /// Windows up to 5 s: on the simulated calibration drive 1 s windows gave scales 0.5 % high
   /// (end-of-window timing), 2..10 s windows agreed within 0.05 %.

@@ -21,6 +21,9 @@ struct SyntheticDriveSpec {
   RobotConfig truth;    ///< what the robot is
   double fix_sigma_m = 0.003;
   double fix_sigma_rad = 0.0005;
+  /// Correlation of consecutive fixes' errors (AR(1) coefficient; 0: independent). The marginal
+  /// sigma stays fix_sigma_*.
+  double fix_correlation = 0.0;
   unsigned seed = 7;
 };
 
@@ -52,6 +55,8 @@ inline CalibrationDrive make_synthetic_drive(const SyntheticDriveSpec& spec) {
   std::array<double, 4> start_ticks{};
   for (size_t w = 0; w < 4; ++w) start_ticks[w] = last_encoder.ticks[w];
   int64_t k = 0;
+  Eigen::Vector3d fix_error = Eigen::Vector3d::Zero();
+  const double innovation = std::sqrt(1.0 - spec.fix_correlation * spec.fix_correlation);
   for (const TimedTwist& segment : calibration_profile()) {
     const auto steps = static_cast<int64_t>(std::lround(segment.duration_s * 1e6 / step_us));
     for (int64_t i = 0; i < steps; ++i, ++k) {
@@ -74,9 +79,14 @@ inline CalibrationDrive make_synthetic_drive(const SyntheticDriveSpec& spec) {
       }
       if (k % 20 == 13) {  // 50 Hz fixes, not on the encoder stamps
         Pose2 map_T_laser = map_T_robot * spec.truth.robot_T_laser;
-        map_T_laser.x += spec.fix_sigma_m * unit(rng);
-        map_T_laser.y += spec.fix_sigma_m * unit(rng);
-        map_T_laser.theta += spec.fix_sigma_rad * unit(rng);
+        Eigen::Vector3d fresh;  // drawn in this order (x, y, theta): arguments' order is unspecified
+        fresh.x() = spec.fix_sigma_m * unit(rng);
+        fresh.y() = spec.fix_sigma_m * unit(rng);
+        fresh.z() = spec.fix_sigma_rad * unit(rng);
+        fix_error = drive.laser_fixes.empty() ? fresh : spec.fix_correlation * fix_error + innovation * fresh;
+        map_T_laser.x += fix_error.x();
+        map_T_laser.y += fix_error.y();
+        map_T_laser.theta += fix_error.z();
         TimedPose fix{utime, map_T_laser * spec.nominal.robot_T_laser.inverse(), Eigen::Matrix3d::Zero()};
         // The solver's covariance is of map_T_robot; give the laser's, carried through the lever arm.
         TimedPose laser_with_cov{
