@@ -34,10 +34,12 @@ DriverServiceConfig parse_driver_config(const JsonConfig& file) {
   s.backoff_max_s = file.number("/backoff_max_s", s.backoff_max_s, s.backoff_initial_s, 600);
   s.max_parse_error_streak =
       static_cast<uint32_t>(file.integer("/max_parse_error_streak", s.max_parse_error_streak, 1, 1000));
-  s.clock.bin_s = file.number("/clock_bin_s", s.clock.bin_s, 0.1, 60);
-  s.clock.window_bins =
-      static_cast<size_t>(file.integer("/clock_window_bins", static_cast<long long>(s.clock.window_bins), 5,
-                                       static_cast<long long>(SensorClockFilter::kMaxBins)));
+  s.stamping.clock.bin_s = file.number("/clock_bin_s", s.stamping.clock.bin_s, 0.1, 60);
+  s.stamping.clock.window_bins = static_cast<size_t>(
+      file.integer("/clock_window_bins", static_cast<long long>(s.stamping.clock.window_bins), 5,
+                   static_cast<long long>(SensorClockFilter::kMaxBins)));
+  s.stamping.settle_reads = static_cast<size_t>(
+      file.integer("/clock_settle_reads", static_cast<long long>(s.stamping.settle_reads), 1, 25));
   c.output_channel = file.string("/output_channel", c.output_channel);
   if (c.output_channel.empty()) file.fail("/output_channel", "must not be empty");
   c.error_after_s = file.number("/error_after_s", c.error_after_s, 0.1, 3600);

@@ -34,6 +34,12 @@ std::vector<std::pair<const char*, int64_t>> link_counters(const Lms100SessionCo
           {"implausible_angles", v(c.implausible_angles)},
           {"implausible_beam_timing", v(c.implausible_beam_timing)},
           {"reserved_distance_codes", v(c.reserved_distance_codes)},
+          {"scans_in_bursts", v(c.scans_in_bursts)},
+          {"held_scans", v(c.held_scans)},
+          {"held_scans_dropped", v(c.held_scans_dropped)},
+          {"held_scan_max_delay_us", c.held_scan_max_delay_us.load()},
+          {"utime_not_increasing", v(c.utime_not_increasing)},
+          {"clock_restarts", v(c.clock_restarts)},
           {"publish_failures", static_cast<int64_t>(publish_failures)}};
 }
 

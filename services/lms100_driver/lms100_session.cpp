@@ -45,7 +45,7 @@ Lms100Session::Lms100Session(Lms100SessionConfig config, ScanCallback on_scan, S
       on_state_(std::move(on_state)),
       splitter_(config_.max_frame_bytes),
       receive_buffer_(65536),
-      clock_(config_.clock) {
+      stamper_(config_.stamping) {
   if (::pipe2(wake_pipe_, O_CLOEXEC | O_NONBLOCK) != 0) {
     wake_pipe_[0] = wake_pipe_[1] = -1;  // stop() then relies on the flag and the 100 ms poll bound
   }
@@ -123,7 +123,8 @@ std::string Lms100Session::run_connection() {
   }
   ++counters_.connects;
   splitter_.reset();
-  clock_.reset();
+  stamper_.reset();
+  publish_stamped_scans();  // nothing to publish: brings the counters up to date
   have_last_scan_counter_ = false;
   parse_error_streak_ = 0;
   set_state(SessionState::kConfiguring, "connected to " + where + ", configuring");

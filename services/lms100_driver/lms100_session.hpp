@@ -17,7 +17,7 @@
 #include "lms100_driver/cola_a_splitter.hpp"
 #include "lms100_driver/lmd_scandata.hpp"
 #include "lms100_driver/scan_plausibility.hpp"
-#include "lms100_driver/sensor_clock_filter.hpp"
+#include "lms100_driver/scan_stamper.hpp"
 #include "lms100_driver/tcp_connection.hpp"
 
 namespace refloc {
@@ -42,7 +42,7 @@ struct Lms100SessionConfig {
   double stop_reply_timeout_s = 0.5;    ///< for the polite sEN 0 / LMCstopmeas on stop [s]
   uint32_t max_parse_error_streak = 5;  ///< consecutive bad scans → reconnect
   size_t max_frame_bytes = cola::kMaxTelegramBytes;
-  SensorClockFilterConfig clock;
+  ScanStamperConfig stamping;  ///< clock filter and the hold after a connect (scan_stamper.hpp)
 
   /// Nominal scan period from the requested frequency [s].
   double scan_period_s() const { return 100.0 / scan.frequency_1e2hz; }
@@ -72,6 +72,13 @@ struct Lms100SessionCounters {
   std::atomic<uint64_t> implausible_angles{0};
   std::atomic<uint64_t> implausible_beam_timing{0};
   std::atomic<uint64_t> reserved_distance_codes{0};  ///< beams with a code 2..15, published as no echo
+  // Stamping (scan_stamper.hpp): what was delayed or dropped so that every stamp is supported.
+  std::atomic<uint64_t> scans_in_bursts{0};        ///< scans that shared their read with a later one
+  std::atomic<uint64_t> held_scans{0};             ///< scans published after the clock settled
+  std::atomic<uint64_t> held_scans_dropped{0};     ///< held scans never published
+  std::atomic<uint64_t> utime_not_increasing{0};   ///< scans dropped: stamp not after the previous
+  std::atomic<int64_t> held_scan_max_delay_us{0};  ///< longest read-to-publish delay of a held scan [us]
+  std::atomic<uint64_t> clock_restarts{0};  ///< clock fits restarted on a host clock step or sensor reboot
 };
 
 enum class SessionState { kConnecting, kConfiguring, kWaitingReady, kStreaming, kBackoff, kStopped };
@@ -128,9 +135,11 @@ class Lms100Session {
   /// the deadline, a stop, or a link failure.
   Wait pump(const std::string* request, int64_t deadline_us, bool return_on_scan, std::string& reply,
             std::string& why);
-  /// Parses one sSN/sRA LMDscandata and hands it to on_scan_ when plausible (else counts it
-  /// and tells on_rejected_); false on a parse error.
+  /// Parses one sSN/sRA LMDscandata and adds it to the stamper when plausible (else counts it
+  /// and tells on_rejected_); false on a parse error. Nothing is published here.
   bool handle_scan(const std::string& payload, int64_t receive_utime);
+  /// Every frame read so far is handled: the stamper's releasable scans go to on_scan_.
+  void publish_stamped_scans();
   void stop_streaming_politely();
   void set_state(SessionState state, const std::string& detail);
   bool sleep_interruptible(double seconds);
@@ -153,7 +162,7 @@ class Lms100Session {
   std::string frame_;
   LmdScanData scan_data_;
   LaserScan scan_;
-  SensorClockFilter clock_;
+  ScanStamper stamper_;
   bool have_last_scan_counter_ = false;
   uint32_t last_scan_counter_ = 0;
   uint32_t parse_error_streak_ = 0;

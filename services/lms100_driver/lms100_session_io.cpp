@@ -42,7 +42,8 @@ Lms100Session::Wait Lms100Session::transact(const std::string& request, double t
 Lms100Session::Wait Lms100Session::pump(const std::string* request, int64_t deadline_us, bool return_on_scan,
                                         std::string& reply, std::string& why) {
   for (;;) {
-    // Frames already buffered first: one read can carry a reply and several scans.
+    // Frames already buffered first: one read can carry a reply and several scans. Every
+    // scan of the read reaches the clock filter before any is stamped (scan_stamper.hpp).
     bool got_scan = false;
     while (splitter_.next(frame_)) {
       if (is_lmd_scandata(frame_)) {
@@ -52,7 +53,6 @@ Lms100Session::Wait Lms100Session::pump(const std::string* request, int64_t dead
           why = fmt::format("{} unparsable scans in a row", parse_error_streak_);
           return Wait::kParseErrors;
         }
-        if (got_scan && return_on_scan) return Wait::kScan;
         continue;
       }
       uint32_t code = 0;
@@ -70,6 +70,8 @@ Lms100Session::Wait Lms100Session::pump(const std::string* request, int64_t dead
       if (parse_sopas_error(frame_, code)) ++counters_.sfa_errors;
       ++counters_.unexpected_frames;  // a late or duplicated reply (seen on real LMS111s)
     }
+    publish_stamped_scans();
+    if (got_scan && return_on_scan) return Wait::kScan;
     if (stop_.load()) {
       why = "stopped";
       return Wait::kStopped;
@@ -127,15 +129,24 @@ bool Lms100Session::handle_scan(const std::string& payload, int64_t receive_utim
     return true;
   }
 
-  const SensorTimeMapping t =
-      clock_.update(scan_data_.time_since_startup_us, scan_data_.time_of_transmission_us, receive_utime);
-  scan_.utime = t.host_start_utime;
-  scan_.receive_utime = receive_utime;
-  scan_.sensor_start_us = t.sensor_start_us;
-  scan_.sensor_transmit_us = t.sensor_transmit_us;
-  ++counters_.scans;
-  if (on_scan_) on_scan_(scan_);
+  stamper_.add(scan_, scan_data_.time_since_startup_us, scan_data_.time_of_transmission_us, receive_utime);
   return true;
+}
+
+void Lms100Session::publish_stamped_scans() {
+  if (stamper_.held() > 0) {
+    stamper_.release(now_utime(), [this](const LaserScan& scan) {
+      ++counters_.scans;
+      if (on_scan_) on_scan_(scan);
+    });
+  }
+  const ScanStamperCounts& c = stamper_.counts();
+  counters_.scans_in_bursts.store(c.scans_in_bursts);
+  counters_.held_scans.store(c.held_scans);
+  counters_.held_scans_dropped.store(c.held_scans_dropped);
+  counters_.utime_not_increasing.store(c.utime_not_increasing);
+  counters_.held_scan_max_delay_us.store(c.held_scan_max_delay_us);
+  counters_.clock_restarts.store(stamper_.clock().resets());
 }
 
 void Lms100Session::count_rejection(const ScanPlausibility& verdict) {

@@ -53,6 +53,18 @@ TEST(DriverConfigFile, DeployedFileLoads) {
   const DriverServiceConfig c = parse_driver_config(file);
   EXPECT_NO_THROW(file.reject_unknown_keys());
   EXPECT_EQ(c.session.scan.frequency_1e2hz, 5000u);
+  EXPECT_EQ(c.session.stamping.settle_reads, Lms100SessionConfig{}.stamping.settle_reads);
+}
+
+TEST(DriverConfigFile, ClockSettleReadsIsReadAndRangeChecked) {
+  EXPECT_EQ(parse("{}").session.stamping.settle_reads, 5u);
+  EXPECT_EQ(parse(R"({"clock_settle_reads": 10})").session.stamping.settle_reads, 10u);
+  try {
+    parse(R"({"clock_settle_reads": 0})");
+    ADD_FAILURE() << "0 accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("/clock_settle_reads"), std::string::npos);
+  }
 }
 
 }  // namespace

@@ -129,13 +129,16 @@ inline size_t open_fd_count() {
 }
 
 /// Replies like a healthy LMS100; every reply is preceded by a scan telegram, and
-/// STlms reports 3, 4, 4, then 7.
+/// STlms reports 3, 4, 4, then 7. Its microsecond clock runs with the host's (a scan's
+/// transmission is now), so each scan has its own sensor time, as on a real sensor.
 struct ChattySensor {
   std::atomic<unsigned> counter{100};
   std::atomic<int> status_polls{0};
   std::string current_scan_config = "9C4 1 9C4 FFF92230 225510";  // 25 Hz: the driver must change it
   std::vector<std::string> operator()(const std::string& r) {
-    std::vector<std::string> out{test::make_scan_telegram({500, 600, 700}, {10, 20, 30}, 16, counter++)};
+    const auto transmit_us = static_cast<unsigned>(now_utime());
+    std::vector<std::string> out{
+        test::make_scan_telegram({500, 600, 700}, {10, 20, 30}, 16, counter++, transmit_us - 2429)};
     if (r.rfind("sMN SetAccessMode", 0) == 0) out.push_back("sAN SetAccessMode 1");
     if (r == "sRN LMPscancfg") out.push_back("sRA LMPscancfg " + current_scan_config);
     if (r.rfind("sMN mLMPsetscancfg", 0) == 0)

@@ -1,0 +1,117 @@
+// Issue 12 against the emulator: its scan telegrams merged into bursts of 4 per write
+// (so the first 4 after every connect arrive in one read), a 100 ms stall mid-stream, and
+// a dropped connection. The emulator knows each scan's true first-beam time:
+// power_up_utime + the sensor clock of beam 0 (its clock does not drift).
+#include "lms100_driver/lms100_session.hpp"
+
+#include <gtest/gtest.h>
+
+#if __has_include("lms100_emulator/lms100_emulator.hpp")
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "common/clock.hpp"
+#include "lms100_emulator/lms100_emulator.hpp"
+#include "lms100_emulator/test_pattern_scan_source.hpp"
+
+namespace refloc {
+namespace {
+
+using namespace std::chrono_literals;
+
+struct Sink {
+  std::mutex mutex;
+  std::vector<LaserScan> scans;
+  void add(const LaserScan& s) {
+    std::lock_guard<std::mutex> lock(mutex);
+    scans.push_back(s);
+  }
+  size_t count() {
+    std::lock_guard<std::mutex> lock(mutex);
+    return scans.size();
+  }
+  bool wait_for(size_t n, std::chrono::milliseconds timeout) {
+    const auto until = std::chrono::steady_clock::now() + timeout;
+    while (count() < n) {
+      if (std::chrono::steady_clock::now() > until) return false;
+      std::this_thread::sleep_for(2ms);
+    }
+    return true;
+  }
+};
+
+constexpr int kMergedScans = 4;
+constexpr double kStampBoundUs = 2000.0;
+
+TEST(SessionEmulatorTimestamps, MergedBurstsStallAndReconnectAllStampedWithinTwoMilliseconds) {
+  Lms100EmulatorConfig emulator_config;
+  emulator_config.port = 0;
+  emulator_config.device.spin_up_s = 0.1;
+  emulator_config.faults.merge_scan_telegrams = kMergedScans;
+  Lms100Emulator emulator(emulator_config, make_test_pattern_scan_source());
+  emulator.start();
+
+  Lms100SessionConfig config;
+  config.host = "127.0.0.1";
+  config.port = emulator.port();
+  config.reply_timeout_s = 1.0;
+  config.backoff_initial_s = 0.1;
+  // Bursts of 4 leave 60-80 ms between reads; a 100 ms stall adds to that.
+  config.scan_timeout_periods = 15.0;
+  Sink sink;
+  Lms100Session session(config, [&](const LaserScan& s) { sink.add(s); });
+  session.start_thread();
+
+  ASSERT_TRUE(sink.wait_for(40, 10s)) << "got " << sink.count();
+  emulator.faults().stall_for_ms(100);
+  ASSERT_TRUE(sink.wait_for(80, 10s));
+  const size_t before_reconnect = sink.count();
+  emulator.faults().close_connection_now();
+  ASSERT_TRUE(sink.wait_for(before_reconnect + 40, 10s));
+  session.join();
+  emulator.stop();
+
+  std::lock_guard<std::mutex> lock(sink.mutex);
+  double worst_us = 0;
+  double worst_first_burst_us = 0;
+  double worst_after_reconnect_us = 0;
+  size_t shared = 0;
+  size_t not_increasing = 0;
+  for (size_t k = 0; k < sink.scans.size(); ++k) {
+    const LaserScan& s = sink.scans[k];
+    const int64_t truth = emulator.power_up_utime() + s.sensor_start_us;
+    const double error_us = std::fabs(static_cast<double>(s.utime - truth));
+    worst_us = std::max(worst_us, error_us);
+    if (k < kMergedScans) worst_first_burst_us = std::max(worst_first_burst_us, error_us);
+    if (k >= before_reconnect && k < before_reconnect + kMergedScans)
+      worst_after_reconnect_us = std::max(worst_after_reconnect_us, error_us);
+    if (k > 0 && s.utime == sink.scans[k - 1].utime) ++shared;
+    if (k > 0 && s.utime <= sink.scans[k - 1].utime) ++not_increasing;
+  }
+  std::printf(
+      "%zu scans in bursts of %d: worst |error| %.0f us (first burst %.0f us, first after reconnect %.0f "
+      "us), shared utimes %zu, not increasing %zu\n",
+      sink.scans.size(), kMergedScans, worst_us, worst_first_burst_us, worst_after_reconnect_us, shared,
+      not_increasing);
+  EXPECT_GE(session.counters().reconnects.load(), 1u);
+  EXPECT_LT(worst_first_burst_us, kStampBoundUs);
+  EXPECT_LT(worst_after_reconnect_us, kStampBoundUs);
+  EXPECT_LT(worst_us, kStampBoundUs);
+  EXPECT_EQ(shared, 0u);
+  EXPECT_EQ(not_increasing, 0u);
+}
+
+}  // namespace
+}  // namespace refloc
+
+#else
+TEST(SessionEmulatorTimestamps, SkippedWithoutEmulator) {
+  GTEST_SKIP() << "services/lms100_emulator not present";
+}
+#endif
