@@ -53,6 +53,8 @@ class LocalizationPipeline {
 
   /// ODOMETRY: the extractor's motion compensation uses the latest.
   void on_odometry(const OdometrySample& sample) { extractor_.on_odometry(sample); }
+  /// LASER_POSE fed back: the extractor's motion source while ODOMETRY is absent or stale.
+  void on_laser_pose(const LaserPoseFix& fix) { extractor_.on_laser_pose(fix); }
   /// POSE: the matcher's prior candidate (PriorSelector decides per scan).
   void on_pose(const FusedPose& pose) { matcher_.on_pose(pose); }
   /// LMS100_SCAN: extract, match, solve; the reference stays valid until the next call.

@@ -1,8 +1,11 @@
 // refloc-eval: accuracy studies of the localization pipeline in simulation.
 //   refloc-eval paper-table   the paper's Table 1 protocol, both modes side by side
 //   refloc-eval random --n N  random poses of a world; also wrong matches, recall, false detections
+//   refloc-eval drive         a robot driving a loop: motion compensation by odometry, fixes, none
 
 #include "common/guarded_main.hpp"
+#include "drive_command.hpp"
+#include "drive_options.hpp"
 #include "eval_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -82,7 +85,13 @@ int main(int argc, char** argv) {
   CLI::App* random = app.add_subcommand("random", "random poses in a world: accuracy, wrong matches, recall");
   refloc::add_common_options(random, o);
   random->add_option("--n", o.n, "number of poses")->capture_default_str()->check(CLI::Range(1, 10000000));
+  refloc::DriveOptions d;
+  CLI::App* drive = app.add_subcommand(
+      "drive", "a moving robot's consecutive scans: motion compensation with odometry, from fixes, none");
+  refloc::add_drive_options(drive, d);
   CLI11_PARSE(app, argc, argv);
+  if (drive->parsed())
+    return refloc::guarded_main("refloc-eval", [&] { return refloc::run_drive_command(d); });
   const std::string command = table->parsed() ? "paper-table" : "random";
   return refloc::guarded_main("refloc-eval", [&] { return refloc::run_eval(command, o); });
 }
