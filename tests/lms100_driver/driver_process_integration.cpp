@@ -141,6 +141,21 @@ TEST(Lms100DriverProcess, PublishesScansAndRecoversWhenTheEmulatorIsKilledAndRes
            counter(c.driver_heartbeats.back(), "reconnects") >= 2;
   }));
 
+  // Issue 12: over three connects to three emulator processes (each a fresh sensor clock)
+  // every stamp is after the one before, and the hold after each connect is in HEARTBEAT.
+  size_t not_increasing = 0;
+  for (size_t k = 1; k < c.scans.size(); ++k) not_increasing += c.scans[k].utime <= c.scans[k - 1].utime;
+  EXPECT_EQ(not_increasing, 0u) << "of " << c.scans.size() << " scans";
+  const heartbeat_t& hb = c.driver_heartbeats.back();
+  std::printf("held_scans %lld, held_scan_max_delay_us %lld\n",
+              static_cast<long long>(counter(hb, "held_scans")),
+              static_cast<long long>(counter(hb, "held_scan_max_delay_us")));
+  EXPECT_EQ(counter(hb, "utime_not_increasing"), 0);
+  EXPECT_GE(counter(hb, "held_scans"),
+            8);  // 4 a connect wait for the fifth read (the third may be in flight)
+  EXPECT_GT(counter(hb, "held_scan_max_delay_us"), 0);
+  EXPECT_EQ(counter(hb, "held_scans_dropped"), 0);
+
   EXPECT_EQ(driver.stop(), 0);
 }
 
