@@ -12,7 +12,8 @@ ExtractorConfig ExtractorConfig::paper() {
   config.mode = Mode::kPaper;
   // The paper screens by energy first and clusters the surviving points.
   config.clustering.max_gap_beams = -1;
-  config.min_beams = 3;  // a circle needs three points
+  config.min_beams = 3;  // d-bar without the first and last point needs a third
+  config.paper_centre = PaperCentreReading::kKnownRadius;
   return config;
 }
 
@@ -88,7 +89,20 @@ void ReflectorExtractor::process_cluster_paper(const BeamTable& table, const Bea
   }
   gather_beams(table, cluster);
   CircleFit fit;
-  if (!fit_circle_algebraic(beams_, config_.clustering.range_sigma, fit)) {
+  bool fitted = false;
+  switch (config_.paper_centre) {
+    case PaperCentreReading::kAlgebraicFreeRadius:
+      fitted = fit_circle_algebraic(beams_, config_.clustering.range_sigma, fit);
+      break;
+    case PaperCentreReading::kKnownRadius:
+      fitted = paper_known_radius_centre(beams_, config_.reflector_radius, fit);
+      break;
+    case PaperCentreReading::kPolar:
+      fitted = paper_polar_centre(beams_, config_.reflector_radius, config_.paper_drop_points,
+                                  config_.clustering.range_sigma, fit);
+      break;
+  }
+  if (!fitted) {
     ++stats_.rejected_fit_failed;
     return;
   }

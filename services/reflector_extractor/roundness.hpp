@@ -18,9 +18,10 @@ double paper_roundness_index(const std::vector<FitBeam>& beams, const Eigen::Vec
 /// 30 mm in §3.4).
 struct RoundnessLine {
   // From `refloc-calibrate-roundness --scans 5` on the LMS100 emulator's scans (emulator
-  // d564682: fitted 8.0 mm - 0.46 mm/m, raised 30 mm). Unlike the paper's Figure 9, d-bar
-  // does not grow with distance here: fewer beams far away, so the free circle fits them
-  // ever more closely (three beams with one dropped each side: d-bar = 0).
+  // d564682: fitted 8.0 mm - 0.46 mm/m, raised 30 mm), measured with the free algebraic
+  // circle; with the designed radius (paper mode since issue 12) the same calibration lands
+  // within 0.3 mm of this line over 0-3 m, so it stays (numbers in the extractor README).
+  // Unlike the paper's Figure 9, d-bar does not grow with distance here.
   double offset = 0.0380;   ///< [m]
   double slope = -0.00046;  ///< [m per m of range]
   bool accepts(double d_bar, double range) const { return d_bar <= offset + slope * range; }

@@ -191,6 +191,7 @@ TEST(PaperMode, UsesThePapersThresholdAndDropsOnePointEachSide) {
   EXPECT_EQ(paper.mode, ExtractorConfig::Mode::kPaper);
   EXPECT_DOUBLE_EQ(paper.energy_threshold_8bit, 180.0);
   EXPECT_EQ(paper.paper_drop_points, 1);
+  EXPECT_EQ(paper.paper_centre, PaperCentreReading::kKnownRadius);  // the designed 120 mm diameter
   EXPECT_NEAR(paper.clustering.lambda, 10.0 * kDeg, 1e-12);
   EXPECT_DOUBLE_EQ(paper.clustering.range_sigma, 0.012);
 }
@@ -208,7 +209,7 @@ TEST(PaperMode, RoundnessIndexLeavesOutTheFirstAndLastNPoints) {
   EXPECT_LT(paper_roundness_index(beams, Eigen::Vector2d::Zero(), 0.06, 3), 0.0);
 }
 
-TEST(PaperMode, CentreIsTheAlgebraicFitOfTheClusterAndDBarIsReported) {
+TEST(PaperMode, CentreIsTheKnownRadiusFitOfTheClusterAndDBarIsReported) {
   SyntheticScene scene;
   scene.cylinders = {test::cylinder_at(1.0, 0.0)};
   const LaserScan scan = render(scene, 5);
@@ -226,9 +227,10 @@ TEST(PaperMode, CentreIsTheAlgebraicFitOfTheClusterAndDBarIsReported) {
     beams.push_back(b);
   }
   CircleFit fit;
-  ASSERT_TRUE(fit_circle_algebraic(beams, 0.012, fit));
+  ASSERT_TRUE(paper_known_radius_centre(beams, 0.06, fit));
   EXPECT_NEAR((detections[0].laser_p_center - fit.center).norm(), 0.0, 1e-9);
-  EXPECT_NEAR(detections[0].fitted_radius_m, fit.radius, 1e-9);
+  EXPECT_DOUBLE_EQ(detections[0].fitted_radius_m, 0.06);
+  EXPECT_LT((detections[0].laser_p_center - Eigen::Vector2d(1.0, 0.0)).norm(), 0.02);
   EXPECT_NEAR(detections[0].roundness_m, paper_roundness_index(beams, fit.center, fit.radius, 1), 1e-12);
 }
 
