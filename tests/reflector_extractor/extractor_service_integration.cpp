@@ -1,7 +1,8 @@
 // reflector_extractor as a real process over UDP multicast (run in a private network
-// namespace): LMS100_SCAN and ODOMETRY in, REFLECTORS out. Checks the message fields,
-// that the published centres are the library's, motion-compensated with the odometry
-// twist and the laser mount, and that a bad config file exits with code 2.
+// namespace): LMS100_SCAN, ODOMETRY and LASER_POSE in, REFLECTORS out. Checks the message
+// fields, that the published centres are the library's, motion-compensated with the odometry
+// twist and the laser mount, or without odometry with the twist of the LASER_POSE fixes, and
+// that a bad config file exits with code 2.
 
 #include "common/lcm_conversions.hpp"
 #include "common/robot_config.hpp"
@@ -15,6 +16,7 @@
 #include <lcm/lcm-cpp.hpp>
 #include <refloc/laser_scan_t.hpp>
 #include <refloc/odometry_t.hpp>
+#include <refloc/pose2d_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 
 #include <chrono>
@@ -127,6 +129,54 @@ TEST_F(ExtractorService, PublishesMotionCompensatedDetectionsOfEachScan) {
   ReflectorExtractor raw_extractor;
   const std::vector<ReflectorDetection>& raw = raw_extractor.extract(received);
   EXPECT_NEAR((expected[1].laser_p_center - raw[1].laser_p_center).norm(), 0.0106, 0.001);
+  EXPECT_EQ(service_.stop(), 0);
+}
+
+TEST_F(ExtractorService, WithoutOdometryCompensatesWithTheTwistOfTheLaserPoseFixes) {
+  SyntheticScene scene;
+  for (double bearing_deg : {-100.0, 0.0, 100.0}) {
+    SyntheticCylinder c;
+    c.laser_p_center =
+        2.0 * Eigen::Vector2d(std::cos(bearing_deg * M_PI / 180.0), std::sin(bearing_deg * M_PI / 180.0));
+    scene.cylinders.push_back(c);
+  }
+  std::mt19937 rng(5);
+  SyntheticScanConfig scan_config;
+  scan_config.utime = 5'000'000'000;
+  const LaserScan scan = render_synthetic_scan(scene, scan_config, rng);
+  const laser_scan_t message = to_lcm(scan);
+  laser_scan_t warmup = message;
+  warmup.utime -= 20'000;
+  ASSERT_TRUE(exchange("LMS100_SCAN", warmup, warmup.utime));
+  // 10 OK fixes of a robot driving straight ahead at 1 m/s, 50 Hz, the newest 20 ms before the scan.
+  for (int k = 0; k < 10; ++k) {
+    pose2d_t fix{};
+    fix.utime = scan.utime - 20'000 * (10 - k);
+    fix.x = 3.0 + 1.0 * 0.02 * k;
+    fix.y = 2.0;
+    fix.covariance[0] = fix.covariance[4] = 1e-5;
+    fix.covariance[8] = 1e-6;
+    fix.status = pose2d_t::STATUS_OK;
+    lcm_.publish("LASER_POSE", &fix);
+  }
+  const auto out = exchange("LMS100_SCAN", message, message.utime);
+  ASSERT_TRUE(out.has_value());
+  ASSERT_EQ(out->reflectors.size(), 3u);
+
+  LaserScan received;
+  ASSERT_TRUE(from_lcm(message, received));
+  ReflectorExtractor extractor;
+  std::vector<ReflectorDetection> expected = extractor.extract(received);
+  const std::vector<ReflectorDetection> raw = expected;
+  const Pose2 robot_T_laser = load_robot_config(kSource + "/deploy/config/robot.json").robot_T_laser;
+  compensate_motion(expected, scan.utime, BodyTwist{1.0, 0.0, 0.0}, robot_T_laser);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(out->reflectors[i].x, expected[i].laser_p_center.x(), 1e-9);
+    EXPECT_NEAR(out->reflectors[i].y, expected[i].laser_p_center.y(), 1e-9);
+  }
+  // Straight ahead, seen ~7.5 ms after the first beam at 1 m/s: at the first beam the laser
+  // was 7.5 mm further back, so the reflector 7.5 mm further ahead.
+  EXPECT_NEAR(expected[1].laser_p_center.x() - raw[1].laser_p_center.x(), 0.0075, 0.001);
   EXPECT_EQ(service_.stop(), 0);
 }
 
