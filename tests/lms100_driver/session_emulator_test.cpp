@@ -197,7 +197,10 @@ TEST_F(SessionEmulatorTest, DroppedScansAreCountedAsCounterGaps) {
   emulator_->faults().drop_next_scans(2);  // 40 ms without scans: under the 60 ms timeout
   const size_t before = sink_.count();
   ASSERT_TRUE(sink_.wait_for(before + 10, 3s));
-  EXPECT_EQ(session_->counters().scan_counter_gaps.load(), 1u);
+  EXPECT_EQ(session_->counters().scan_counter_gaps.load(), 1u)
+      << "reconnects " << session_->counters().reconnects.load() << ", timeouts "
+      << session_->counters().timeouts.load() << ", held " << session_->counters().held_scans.load()
+      << ", dropped while held " << session_->counters().held_scans_dropped.load();
   EXPECT_EQ(session_->counters().lost_scans.load(), 2u);
 }
 
