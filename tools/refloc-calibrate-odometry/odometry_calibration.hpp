@@ -62,8 +62,10 @@ std::vector<OdometryWindow> odometry_windows(const CalibrationDrive& drive, cons
 std::vector<TimedPose> encoder_odometry(const std::vector<EncoderSample>& encoders,
                                         const RobotConfig& nominal);
 
-/// The direct solution (every fix; refloc-calibrate-mount's mount_direct.hpp on encoder odometry):
-/// its odometry scales s (translation) and h (heading) are s_r and s_r / s_k. robot_T_laser:
+/// The end-pose solution (--method direct-endpoint; every fix, refloc-calibrate-mount's
+/// mount_direct.hpp on encoder odometry): its odometry scales s (translation) and h (heading) are
+/// s_r and s_r / s_k. Approximate when a segment turns and translates; the default is
+/// calibrate_odometry_exact (odometry_direct.hpp). robot_T_laser:
 /// the calibrated mount, held; the drive's laser_fixes as LASER_POSE gives them (with
 /// configured_robot_T_laser).
 OdometryCalibrationResult calibrate_odometry_direct(const CalibrationDrive& drive, const RobotConfig& nominal,

@@ -5,17 +5,21 @@
 # data/odometry_calibration_mission.json (a full turn in place each way, three 10 m legs at 1 m/s:
 # forward, backward, sideways, along y = 3 m in the demo hall's lower aisle) and records an LCM
 # log (~75 s of fixes); both tools run on the log and are checked against the truth.
-#   calibration_drive.sh SOURCE_DIR BINARY_DIR [MISSION_JSON [SEED]]   (inside tests/tools/run_in_netns.sh)
+#   calibration_drive.sh SOURCE_DIR BINARY_DIR [MISSION_JSON [SEED [RANGE_OFFSET_M]]]
+#   (inside tests/tools/run_in_netns.sh)
 # MISSION_JSON defaults to data/odometry_calibration_mission.json; SEED (default: the deployed
 # robot_sim.json's) seeds robot_sim's slip and the rendered scans' noise (emulator random_seed), for repeated runs.
-# The run directory is BINARY_DIR/tests/tools/calibration_drive_run[_seedN].
+# RANGE_OFFSET_M: a systematic range error of the emulated LMS100 (robot_sim.json
+# render/sensor/range_offset; pose_solver estimates it). An empty argument keeps the default.
+# The run directory is BINARY_DIR/tests/tools/calibration_drive_run[_seedN][_offsetM].
 set -euo pipefail
 source_dir="$(cd "$1" && pwd)"
 binary_dir="$(cd "$2" && pwd)"
 here="$source_dir/tests/tools/refloc-calibrate-mount"
 mission="${3:-$here/data/odometry_calibration_mission.json}"
 seed="${4:-}"
-run_dir="$binary_dir/tests/tools/calibration_drive_run${seed:+_seed$seed}"
+range_offset_m="${5:-}"
+run_dir="$binary_dir/tests/tools/calibration_drive_run${seed:+_seed$seed}${range_offset_m:+_offset$range_offset_m}"
 rm -rf "$run_dir"
 mkdir -p "$run_dir/log"
 fail() { echo "calibration_drive: FAIL: $*" >&2; exit 1; }
@@ -28,8 +32,9 @@ jq '.laser_mount = {"x_m": 0.30, "y_m": -0.10, "theta_rad": 0.0}' "$source_dir/d
 jq '.laser_mount = {"x_m": 0.35, "y_m": -0.12, "theta_rad": (1.5 * 3.141592653589793 / 180)}
     | .wheel_radius_m *= 1.01 | .half_wheelbase_lx_m *= 1.02 | .half_track_ly_m *= 1.02' \
   "$source_dir/deploy/config/robot.json" >"$run_dir/robot_true.json"
-jq --arg seed "$seed" '.slip.scale_error = [0, 0, 0, 0]
-    | if $seed == "" then . else .slip.seed = ($seed | tonumber) | .emulator.random_seed = ($seed | tonumber) end' \
+jq --arg seed "$seed" --arg offset "$range_offset_m" '.slip.scale_error = [0, 0, 0, 0]
+    | if $seed == "" then . else .slip.seed = ($seed | tonumber) | .emulator.random_seed = ($seed | tonumber) end
+    | if $offset == "" then . else .render.sensor.range_offset = ($offset | tonumber) end' \
   "$source_dir/deploy/config/robot_sim.json" >"$config/robot_sim_calibration.json"
 
 export REFLOC_BUILD="$binary_dir"
