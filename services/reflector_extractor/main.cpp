@@ -2,7 +2,6 @@
 // one output per scan. What happens to a scan is ExtractorNode's; this file converts.
 
 #include "common/clock.hpp"
-#include "common/json_config.hpp"
 #include "common/node_event_report.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_command_line.hpp"
@@ -22,24 +21,23 @@
 namespace refloc {
 namespace {
 
+void log_settings(const ExtractorServiceConfig& config) {
+  const std::string motion = !config.motion_compensation   ? "off"
+                             : config.fix_velocity.enabled ? "on (" + config.odometry_channel + ", else " +
+                                                                 config.laser_pose_channel + " fixes)"
+                                                           : "on (" + config.odometry_channel + " only)";
+  spdlog::info("mode {}, energy threshold {:.0f}, radius {:.3f} m, motion compensation {}",
+               config.extractor.mode == ExtractorConfig::Mode::kPaper ? "paper" : "default",
+               config.extractor.energy_threshold_8bit, config.extractor.reflector_radius, motion);
+}
+
 int run(const std::string& lcm_url, const std::string& config_path, const std::string& robot_path) {
-  ExtractorServiceConfig config;
-  if (!config_path.empty()) {
-    const JsonConfig file = JsonConfig::load_file(config_path);
-    config = parse_extractor_service_config(file);
-    file.reject_unknown_keys();
-  }
+  const ExtractorServiceConfig config = load_extractor_service_config(config_path);
   Pose2 robot_T_laser;
   if (config.motion_compensation && !robot_path.empty())
     robot_T_laser = load_robot_config(robot_path).robot_T_laser;
   ExtractorNode node(config, robot_T_laser);
-  spdlog::info("mode {}, energy threshold {:.0f}, radius {:.3f} m, motion compensation {}",
-               config.extractor.mode == ExtractorConfig::Mode::kPaper ? "paper" : "default",
-               config.extractor.energy_threshold_8bit, config.extractor.reflector_radius,
-               !config.motion_compensation ? "off"
-               : config.fix_velocity.enabled
-                   ? "on (" + config.odometry_channel + ", else " + config.laser_pose_channel + " fixes)"
-                   : "on (" + config.odometry_channel + " only)");
+  log_settings(config);
 
   ServiceRuntime runtime("reflector_extractor", lcm_url);
   LaserScan scan;
