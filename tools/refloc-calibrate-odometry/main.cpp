@@ -12,7 +12,7 @@
 int main(int argc, char** argv) {
   CLI::App app{"refloc-calibrate-odometry: estimate wheel radius and lx + ly from a drive's LCM log"};
   refloc::OdometryCommandOptions o;
-  std::vector<double> mount;
+  std::vector<double> mount, true_mount;
   app.add_option("--log", o.log_path, "LCM log of the drive (WHEEL_ENCODERS, LASER_POSE)")->required();
   app.add_option("--robot", o.robot_path, "robot file the services ran with (nominal geometry, mount)")
       ->capture_default_str();
@@ -30,6 +30,12 @@ int main(int argc, char** argv) {
                  "direct: segment length [s] (each segment has its own start pose)")
       ->check(CLI::Range(0.2, 3600.0))
       ->capture_default_str();
+  app.add_option("--truth-channel", o.truth_channel,
+                 "simulation: also print the fixes' errors against this true-pose channel (GROUND_TRUTH)");
+  app.add_option("--true-mount", true_mount,
+                 "simulation: x_m,y_m,theta_rad of the simulated robot's laser mount")
+      ->delimiter(',')
+      ->expected(3);
   app.add_option("--json", o.json_path, "also write the result to this JSON file");
   app.add_option("--encoders-channel", o.channels.encoders)->capture_default_str();
   app.add_option("--laser-pose-channel", o.channels.laser_pose)->capture_default_str();
@@ -42,6 +48,8 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : refloc::kExitConfigError;
   }
   if (mount.size() == 3) o.robot_T_laser = refloc::Pose2{mount[0], mount[1], mount[2]};
+  if (true_mount.size() == 3)
+    o.true_robot_T_laser = refloc::Pose2{true_mount[0], true_mount[1], true_mount[2]};
   return refloc::guarded_main("refloc-calibrate-odometry",
                               [&] { return refloc::run_odometry_calibration(o); });
 }

@@ -2,6 +2,7 @@
 
 #include "common/json_config.hpp"
 #include "common/robot_config.hpp"
+#include "fix_truth_check.hpp"
 #include "odometry_calibration.hpp"
 #include "odometry_direct.hpp"
 
@@ -17,6 +18,23 @@ namespace {
 int report_odometry_calibration(const OdometryCommandOptions& o, const RobotConfig& robot,
                                 const OdometryCalibrationResult& r);
 
+void print_fix_errors(const OdometryCommandOptions& o, const RobotConfig& robot,
+                      const CalibrationDrive& drive, const Pose2& mount) {
+  CalibrationChannels channels = o.channels;
+  channels.laser_pose = o.truth_channel;
+  CalibrationLogCounts counts;
+  const CalibrationDrive truth = read_calibration_log(o.log_path, channels, counts);
+  const FixTruthReport r = compare_fixes_with_truth(drive.laser_fixes, truth.laser_fixes, robot.robot_T_laser,
+                                                    o.true_robot_T_laser.value_or(mount));
+  fmt::print(
+      "fixes against {} ({} fixes): mean error ({:+.2f}, {:+.2f}) mm, sigma ({:.2f}, {:.2f}) mm, "
+      "{:.3f} mrad; lag-1 correlation {:.3f}\n",
+      o.truth_channel, r.fixes, r.mean_x_m * 1e3, r.mean_y_m * 1e3, r.sigma_x_m * 1e3, r.sigma_y_m * 1e3,
+      r.sigma_theta_rad * 1e3, r.lag1_correlation);
+  fmt::print("  similarity fit over +-{:.2f} x +-{:.2f} m: expansion {:+.4f} %, rotation {:+.4f} mrad\n",
+             r.half_extent_x_m, r.half_extent_y_m, r.expansion * 100.0, r.rotation_rad * 1e3);
+}
+
 }  // namespace
 
 int run_odometry_calibration(const OdometryCommandOptions& o) {
@@ -27,6 +45,7 @@ int run_odometry_calibration(const OdometryCommandOptions& o) {
              o.channels.encoders, counts.laser_fixes_ok, o.channels.laser_pose, counts.laser_fixes_not_ok,
              counts.undecodable);
   const Pose2 mount = o.robot_T_laser.value_or(robot.robot_T_laser);
+  if (!o.truth_channel.empty()) print_fix_errors(o, robot, drive, mount);
   if (o.method == "direct") {
     DirectOdometryOptions direct;
     direct.segment_s = o.segment_s;

@@ -22,6 +22,10 @@ struct OdometryCommandOptions {
   std::string method = "direct";
   double segment_s = DirectOdometryOptions{}.segment_s;  ///< direct, direct-endpoint: segment length [s]
   CalibrationChannels channels;
+  /// Simulation only: the true-pose channel (robot_sim's GROUND_TRUTH); when set, the fixes'
+  /// errors against it are printed (fix_truth_check.hpp) before the calibration.
+  std::string truth_channel;
+  std::optional<Pose2> true_robot_T_laser;  ///< the simulated robot's mount (default: the one read with)
   /// Windows up to 5 s: on the simulated calibration drive 1 s windows gave scales 0.5 % high
   /// (end-of-window timing), 2..10 s windows agreed within 0.05 %.
   WindowOptions windows = [] {
