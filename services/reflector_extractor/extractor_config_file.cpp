@@ -57,6 +57,11 @@ ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& c) {
   e.paper_drop_points = static_cast<int>(c.integer("/paper/drop_points", e.paper_drop_points, 0, 20));
   e.paper_roundness.offset = c.number("/paper/roundness_offset_m", e.paper_roundness.offset, -1.0, 1.0);
   e.paper_roundness.slope = c.number("/paper/roundness_slope", e.paper_roundness.slope, -1.0, 1.0);
+  const std::string centre =
+      c.choice("/paper/centre", to_string(e.paper_centre), {"known_radius", "kasa", "polar"});
+  e.paper_centre = centre == "kasa"    ? PaperCentreReading::kAlgebraicFreeRadius
+                   : centre == "polar" ? PaperCentreReading::kPolar
+                                       : PaperCentreReading::kKnownRadius;
 
   e.angle_sigma = c.number("/default/angle_sigma_rad", e.angle_sigma, 0.0, 0.1);
   e.edge_rssi_ratio = c.number("/default/edge_rssi_ratio", e.edge_rssi_ratio, 0.0, 1.0);

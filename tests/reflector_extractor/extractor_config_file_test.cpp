@@ -21,6 +21,7 @@ TEST(ExtractorConfigFile, DeployedFileIsValidAndEqualsTheCodeDefaults) {
   EXPECT_NEAR(c.extractor.clustering.lambda, defaults.clustering.lambda, 1e-12);
   EXPECT_DOUBLE_EQ(c.extractor.paper_roundness.offset, defaults.paper_roundness.offset);
   EXPECT_DOUBLE_EQ(c.extractor.paper_roundness.slope, defaults.paper_roundness.slope);
+  EXPECT_EQ(c.extractor.paper_centre, defaults.paper_centre);
   EXPECT_DOUBLE_EQ(c.extractor.angle_sigma, defaults.angle_sigma);
   EXPECT_DOUBLE_EQ(c.extractor.fit.min_incidence_cos, defaults.fit.min_incidence_cos);
   EXPECT_DOUBLE_EQ(c.extractor.roundness.flat_chi2_margin, defaults.roundness.flat_chi2_margin);
@@ -80,6 +81,26 @@ TEST(ExtractorConfigFile, PaperModeStartsFromThePaperPreset) {
   EXPECT_EQ(c.extractor.clustering.max_gap_beams, -1);
   EXPECT_EQ(c.extractor.min_beams, 3);
   EXPECT_NEAR(c.extractor.clustering.lambda, 15.0 * M_PI / 180.0, 1e-12);
+}
+
+TEST(ExtractorConfigFile, PaperCentreReadingIsReadAndAnUnknownOneNamesItsPointer) {
+  EXPECT_EQ(parse_extractor_service_config(JsonConfig(nlohmann::json{{"mode", "paper"}}, "t"))
+                .extractor.paper_centre,
+            PaperCentreReading::kKnownRadius);
+  const auto reading = [](const char* name) {
+    return parse_extractor_service_config(
+               JsonConfig(nlohmann::json{{"mode", "paper"}, {"paper", {{"centre", name}}}}, "t"))
+        .extractor.paper_centre;
+  };
+  EXPECT_EQ(reading("kasa"), PaperCentreReading::kAlgebraicFreeRadius);
+  EXPECT_EQ(reading("polar"), PaperCentreReading::kPolar);
+  EXPECT_EQ(reading("known_radius"), PaperCentreReading::kKnownRadius);
+  try {
+    reading("median");
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("/paper/centre"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ExtractorConfigFile, OutOfRangeValueNamesItsPointer) {
