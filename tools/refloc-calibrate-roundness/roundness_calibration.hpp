@@ -39,7 +39,7 @@ struct PlacementGrid {
 /// Renders a scan of one reflector whose centre is at (distance, angle) in the laser frame.
 using ReflectorScanRenderer = std::function<void(double distance, double angle, LaserScan& scan)>;
 
-/// Run the paper's extraction (energy, clustering, algebraic fit, d-bar with drop_points,
+/// Run the paper's extraction (energy, clustering, centre fit, d-bar with drop_points,
 /// no acceptance line) on every placement; placements without a cluster give no sample.
 std::vector<RoundnessSample> simulate_roundness_samples(const PlacementGrid& grid, int drop_points,
                                                         const ReflectorScanRenderer& render);
