@@ -32,9 +32,12 @@ echo "robot_sim, missing world: exit 2, no 'started': $(tail -n 1 "$tmp/robot_si
 
 # The runtime (LCM) is up before robot_sim opens its emulator's port: a taken port must not
 # leave a "started" behind either.
-python3 -c "import socket, time; s = socket.socket(); s.bind(('127.0.0.1', 2112)); s.listen(); time.sleep(30)" &
+# The holder says when it listens: a fixed sleep lost the race on a loaded host (robot_sim took
+# the port first, ran, and the test timed out).
+python3 -c "import socket, sys, time; s = socket.socket(); s.bind(('127.0.0.1', 2112)); s.listen(); open(sys.argv[1], 'w').close(); time.sleep(30)" "$tmp/holder_ready" &
 holder=$!
-sleep 0.5
+for _ in $(seq 100); do [ -e "$tmp/holder_ready" ] && break; sleep 0.1; done
+[ -e "$tmp/holder_ready" ] || fail "the port holder did not listen on 127.0.0.1:2112 within 10 s"
 rc=0
 "$build/bin/robot_sim" --lcm-url "$url" --robot deploy/config/robot.json --config deploy/config/robot_sim.json \
   --port 2112 >"$tmp/robot_sim_port.log" 2>&1 || rc=$?
