@@ -34,7 +34,7 @@ check() {  # check "what" JQ_EXPRESSION: the expression must be true on the miss
 check "every waypoint reached" '.waypoints_reached == .waypoints_total and .waypoints_total == 7' \
   '{waypoints_reached, waypoints_total, abort_reason}'
 check "max true arrival error < 20 mm" '.max_waypoint_error_mm < 20' '.max_waypoint_error_mm'
-check "POSE position NEES mean < 4" '.pose_nees.fixes > 100 and .pose_nees.position_nees_mean < 4' '.pose_nees'
+check "POSE position NEES mean < 4" '.pose_nees.nees_fixes > 100 and .pose_nees.position_nees_mean < 4' '.pose_nees'
 check "range bias estimated within 10 mm" \
   ".range_bias_mm != null and ((.range_bias_mm - $offset_mm) | fabs) < 10" '{range_bias_mm, range_bias_sigma_mm}'
 if [ ${#failures[@]} -gt 0 ]; then

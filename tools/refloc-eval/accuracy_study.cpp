@@ -224,27 +224,23 @@ StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Po
 }
 
 nlohmann::json to_json(const ModeSummary& s) {
-  return {{"poses", s.poses},
-          {"measurements", s.measurements},
-          {"published_ok", s.published_ok},
-          {"wrong_matches", s.wrong_matches},
-          {"mean_max_err_x_mm", s.mean_max_err_x_mm},
-          {"mean_max_err_y_mm", s.mean_max_err_y_mm},
-          {"rmse_mm", s.rmse_mm},
-          {"max_err_mm", s.max_err_mm},
-          {"heading_rmse_deg", s.heading_rmse_deg},
-          {"crlb_rmse_mm", s.crlb_rmse_mm},
-          {"crlb_ratio", s.crlb_ratio},
-          {"point_beam_crlb_rmse_mm", s.point_beam_crlb_rmse_mm},
-          {"point_beam_crlb_ratio", s.point_beam_crlb_ratio},
-          {"recall", s.recall},
-          {"false_detection_rate", s.false_detection_rate},
-          {"nees_fixes", s.consistency.fixes},
-          {"unusable_covariances", s.consistency.unusable_covariances},
-          {"position_nees_mean", s.consistency.position_nees_mean},
-          {"position_outside_99_percent", s.consistency.position_outside_99},
-          {"heading_nees_mean", s.consistency.heading_nees_mean},
-          {"heading_outside_99_percent", s.consistency.heading_outside_99}};
+  nlohmann::json j = {{"poses", s.poses},
+                      {"measurements", s.measurements},
+                      {"published_ok", s.published_ok},
+                      {"wrong_matches", s.wrong_matches},
+                      {"mean_max_err_x_mm", s.mean_max_err_x_mm},
+                      {"mean_max_err_y_mm", s.mean_max_err_y_mm},
+                      {"rmse_mm", s.rmse_mm},
+                      {"max_err_mm", s.max_err_mm},
+                      {"heading_rmse_deg", s.heading_rmse_deg},
+                      {"crlb_rmse_mm", s.crlb_rmse_mm},
+                      {"crlb_ratio", s.crlb_ratio},
+                      {"point_beam_crlb_rmse_mm", s.point_beam_crlb_rmse_mm},
+                      {"point_beam_crlb_ratio", s.point_beam_crlb_ratio},
+                      {"recall", s.recall},
+                      {"false_detection_rate", s.false_detection_rate}};
+  j.update(consistency_json(s.consistency));
+  return j;
 }
 
 std::string measurements_csv(const std::vector<Measurement>& measurements) {

@@ -121,29 +121,25 @@ DriveSummary run_drive(const sim::World& world, const ReflectorMap& map, const P
 }
 
 nlohmann::json to_json(const DriveSummary& s) {
-  return {{"source", to_string(s.source)},
-          {"scans", s.scans},
-          {"scored_scans", s.scored_scans},
-          {"ok_fixes", s.ok_fixes},
-          {"degraded_fixes", s.degraded_fixes},
-          {"fixes_without_pose", s.fixes_without_pose},
-          {"wrong_fixes", s.wrong_fixes},
-          {"scans_compensated_odometry", s.compensated_odometry},
-          {"scans_compensated_fixes", s.compensated_fixes},
-          {"scans_not_compensated", s.not_compensated},
-          {"along_track_mean_mm", s.along_mean_mm},
-          {"along_track_rms_mm", s.along_rms_mm},
-          {"cross_track_mean_mm", s.cross_mean_mm},
-          {"cross_track_rms_mm", s.cross_rms_mm},
-          {"position_rmse_mm", s.position_rmse_mm},
-          {"heading_mean_mdeg", s.heading_mean_mdeg},
-          {"heading_rms_mdeg", s.heading_rms_mdeg},
-          {"nees_fixes", s.consistency.fixes},
-          {"unusable_covariances", s.consistency.unusable_covariances},
-          {"position_nees_mean", s.consistency.position_nees_mean},
-          {"position_outside_99_percent", s.consistency.position_outside_99},
-          {"heading_nees_mean", s.consistency.heading_nees_mean},
-          {"heading_outside_99_percent", s.consistency.heading_outside_99}};
+  nlohmann::json j = {{"source", to_string(s.source)},
+                      {"scans", s.scans},
+                      {"scored_scans", s.scored_scans},
+                      {"ok_fixes", s.ok_fixes},
+                      {"degraded_fixes", s.degraded_fixes},
+                      {"fixes_without_pose", s.fixes_without_pose},
+                      {"wrong_fixes", s.wrong_fixes},
+                      {"scans_compensated_odometry", s.compensated_odometry},
+                      {"scans_compensated_fixes", s.compensated_fixes},
+                      {"scans_not_compensated", s.not_compensated},
+                      {"along_track_mean_mm", s.along_mean_mm},
+                      {"along_track_rms_mm", s.along_rms_mm},
+                      {"cross_track_mean_mm", s.cross_mean_mm},
+                      {"cross_track_rms_mm", s.cross_rms_mm},
+                      {"position_rmse_mm", s.position_rmse_mm},
+                      {"heading_mean_mdeg", s.heading_mean_mdeg},
+                      {"heading_rms_mdeg", s.heading_rms_mdeg}};
+  j.update(consistency_json(s.consistency));
+  return j;
 }
 
 }  // namespace refloc

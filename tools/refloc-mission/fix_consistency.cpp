@@ -50,4 +50,13 @@ ConsistencySummary ConsistencyAccumulator::summary() const {
   return s;
 }
 
+nlohmann::json consistency_json(const ConsistencySummary& s) {
+  return {{"nees_fixes", s.fixes},
+          {"unusable_covariances", s.unusable_covariances},
+          {"position_nees_mean", s.position_nees_mean},
+          {"position_outside_99_percent", s.position_outside_99},
+          {"heading_nees_mean", s.heading_nees_mean},
+          {"heading_outside_99_percent", s.heading_outside_99}};
+}
+
 }  // namespace refloc

@@ -7,6 +7,7 @@
 // higher mean and a fat tail.
 
 #include <Eigen/Core>
+#include <nlohmann/json.hpp>
 
 #include <optional>
 
@@ -42,5 +43,10 @@ class ConsistencyAccumulator {
   int position_count_ = 0;
   int heading_count_ = 0;
 };
+
+/// The summary as JSON, one form for every tool (refloc-eval's studies, refloc-mission):
+/// nees_fixes, unusable_covariances, position_nees_mean, position_outside_99_percent (a share,
+/// 0..1), heading_nees_mean, heading_outside_99_percent.
+nlohmann::json consistency_json(const ConsistencySummary& s);
 
 }  // namespace refloc

@@ -9,17 +9,6 @@
 namespace refloc {
 namespace {
 
-/// The NEES figures of one channel; their expected values when the covariance is honest are
-/// 2 and 1 % (position, 2 dof), 1 and 1 % (heading).
-nlohmann::json consistency_json(const ConsistencySummary& s) {
-  return {{"fixes", s.fixes},
-          {"unusable_covariances", s.unusable_covariances},
-          {"position_nees_mean", s.position_nees_mean},
-          {"position_outside_99", s.position_outside_99},
-          {"heading_nees_mean", s.heading_nees_mean},
-          {"heading_outside_99", s.heading_outside_99}};
-}
-
 /// Metres as millimetres, or null when never heard.
 nlohmann::json optional_mm(const std::optional<double>& value_m) {
   return value_m ? nlohmann::json(*value_m * 1000.0) : nlohmann::json(nullptr);

@@ -26,9 +26,10 @@ std::string format_nees(const std::string& channel, const nlohmann::json& nees) 
   return fmt::format(
       "{} NEES vs GROUND_TRUTH: position {:.2f} (honest: 2), {:.1f} % outside 99 %; heading {:.2f} "
       "(honest: 1), {:.1f} % outside 99 %; {} fixes ({} without a usable covariance)\n",
-      channel, nees["position_nees_mean"].get<double>(), 100.0 * nees["position_outside_99"].get<double>(),
-      nees["heading_nees_mean"].get<double>(), 100.0 * nees["heading_outside_99"].get<double>(),
-      nees["fixes"].get<int>(), nees["unusable_covariances"].get<int>());
+      channel, nees["position_nees_mean"].get<double>(),
+      100.0 * nees["position_outside_99_percent"].get<double>(), nees["heading_nees_mean"].get<double>(),
+      100.0 * nees["heading_outside_99_percent"].get<double>(), nees["nees_fixes"].get<int>(),
+      nees["unusable_covariances"].get<int>());
 }
 
 }  // namespace

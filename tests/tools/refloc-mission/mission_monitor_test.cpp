@@ -48,10 +48,10 @@ TEST(MissionMonitor, LocalizedByTheFirstOkPoseAndRecordsPosesOnlyWhileDriving) {
   EXPECT_EQ(r["laser_pose_samples"], 3);
   EXPECT_NEAR(r["laser_pose_rmse_mm"].get<double>(), 0.0, 1e-9);
   EXPECT_EQ(r["log_file"], "refloc.0");
-  EXPECT_EQ(r["pose_nees"]["fixes"], 3);
+  EXPECT_EQ(r["pose_nees"]["nees_fixes"], 3);
   EXPECT_NEAR(r["pose_nees"]["position_nees_mean"].get<double>(), 1.0, 1e-9);
   EXPECT_NEAR(r["pose_nees"]["heading_nees_mean"].get<double>(), 0.0, 1e-9);
-  EXPECT_EQ(r["laser_pose_nees"]["fixes"], 3);
+  EXPECT_EQ(r["laser_pose_nees"]["nees_fixes"], 3);
   EXPECT_NEAR(r["laser_pose_nees"]["position_nees_mean"].get<double>(), 0.0, 1e-9);
   EXPECT_NEAR(r["laser_pose_nees"]["heading_nees_mean"].get<double>(), 1.0, 1e-9);
   EXPECT_THAT(
