@@ -48,8 +48,11 @@ elapsed_ms=$((($(date +%s%N) - start_s) / 1000000))
 [ "$rc" = 2 ] || fail "second reflector_matcher exited $rc, expected 2"
 # Info lines of what main did before the runtime (map loaded) may precede it; one error line.
 [ "$(grep -c 'error' "$tmp/second.log")" = 1 ] || fail "expected one error line, got: $(cat "$tmp/second.log")"
-tail -n 1 "$tmp/second.log" | grep -q "reflector_matcher: error: another reflector_matcher is already running on this host and LCM bus udpm://239.255.76.67:7667: pid $first" \
-  "$tmp/second.log" || fail "message does not name pid $first: $(cat "$tmp/second.log")"
+# The last line, compared in the shell: `tail | grep -q PATTERN FILE` read the file, not the pipe,
+# and under pipefail tail's SIGPIPE (grep -q exits early) failed the check on a loaded host.
+last_line="$(tail -n 1 "$tmp/second.log")"
+[[ "$last_line" == *"reflector_matcher: error: another reflector_matcher is already running on this host and LCM bus udpm://239.255.76.67:7667: pid $first;"* ]] ||
+  fail "message does not name pid $first: $(cat "$tmp/second.log")"
 echo "second instance refused in $elapsed_ms ms: $(cat "$tmp/second.log")"
 
 # ttl does not make another bus; another group does.

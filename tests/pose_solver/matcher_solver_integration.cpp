@@ -16,6 +16,7 @@
 #include <refloc/reflector_detections_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 
@@ -72,19 +73,25 @@ class MatcherSolverIntegration : public ::testing::Test {
 
   /// Publish msg (again every 200 ms: the services may still be starting) until the
   /// LASER_POSE for its utime is back; returns the matches and the pose.
-  std::optional<std::pair<reflector_matches_t, pose2d_t>> exchange(const reflector_detections_t& msg) {
+  /// Publishes msg until its LASER_POSE comes back. A resend is the same scan 100 us later:
+  /// the matcher refuses a repeated stamp (not increasing), and a solver that subscribed after
+  /// the first answer (a loaded host starts it late) would otherwise never see one.
+  std::optional<std::pair<reflector_matches_t, pose2d_t>> exchange(reflector_detections_t msg) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
     auto next_publish = std::chrono::steady_clock::now();
+    std::vector<int64_t> sent;
     while (std::chrono::steady_clock::now() < deadline) {
       if (std::chrono::steady_clock::now() >= next_publish) {
+        if (!sent.empty()) msg.utime += 100;
         lcm_.publish("REFLECTORS", &msg);
+        sent.push_back(msg.utime);
         next_publish += std::chrono::milliseconds(200);
       }
       lcm_.handleTimeout(20);
       for (const pose2d_t& p : poses_) {
-        if (p.utime != msg.utime) continue;
+        if (std::find(sent.begin(), sent.end(), p.utime) == sent.end()) continue;
         for (const reflector_matches_t& m : matches_) {
-          if (m.utime == msg.utime) return std::make_pair(m, p);
+          if (m.utime == p.utime) return std::make_pair(m, p);
         }
       }
     }

@@ -14,8 +14,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace refloc {
@@ -26,6 +28,19 @@ using ::testing::HasSubstr;
 constexpr int kHangGuardS = 20;  // generous: sanitized builds on a loaded CI machine
 const std::string kBin = std::string(REFLOC_BINARY_DIR) + "/bin/";
 const std::string kConfigDir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/";
+
+// ctest runs each test of this file as its own process, two at a time: one directory per
+// process, or two tests read each other's stderr files (seen in CI: one test's FIFO message in
+// another's capture).
+const std::string& scratch_dir() {
+  static const std::string dir = [] {
+    std::string path = ::testing::TempDir() + "refloc_hostile_XXXXXX";
+    if (mkdtemp(path.data()) == nullptr)
+      throw std::runtime_error("mkdtemp failed in " + ::testing::TempDir());
+    return path;
+  }();
+  return dir;
+}
 
 struct ProcessRun {
   int exit_code = -1;
@@ -41,7 +56,7 @@ std::string slurp(const std::string& path) {
 }
 
 ProcessRun run_service(const std::string& args) {
-  const std::string err = ::testing::TempDir() + "/hostile_stderr.txt";
+  const std::string err = scratch_dir() + "/hostile_stderr.txt";
   // No LCM in this test's environment: a binary that got as far as LCM would say so.
   const std::string command = "timeout -s KILL " + std::to_string(kHangGuardS) + " " + args +
                               " --lcm-url 'udpm://239.255.76.67:7667?ttl=0' >/dev/null 2>" + err;
@@ -55,7 +70,7 @@ ProcessRun run_service(const std::string& args) {
 }
 
 ProcessRun run_tool(const std::string& args) {
-  const std::string err = ::testing::TempDir() + "/hostile_tool_stderr.txt";
+  const std::string err = scratch_dir() + "/hostile_tool_stderr.txt";
   const auto t0 = std::chrono::steady_clock::now();
   const int status = std::system(("timeout -s KILL " + std::to_string(kHangGuardS) + " " + kBin +
                                   "refloc-config-check " + args + " >/dev/null 2>" + err)
@@ -77,7 +92,7 @@ void expect_one_line_exit_2(const ProcessRun& r, const std::string& what, const 
 }
 
 std::string write(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/hostile_" + name;
+  const std::string path = scratch_dir() + "/hostile_" + name;
   std::ofstream(path) << text;
   return path;
 }
@@ -111,7 +126,7 @@ TEST(HostileFiles, HundredThousandLevelsOfNesting) {
 }
 
 TEST(HostileFiles, FifoIsRefusedWithoutBlocking) {
-  const std::string path = ::testing::TempDir() + "/hostile_fifo.json";
+  const std::string path = scratch_dir() + "/hostile_fifo.json";
   ::unlink(path.c_str());
   ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
   check_config("FIFO", path, "is a FIFO");
@@ -121,7 +136,7 @@ TEST(HostileFiles, FifoIsRefusedWithoutBlocking) {
 
 TEST(HostileFiles, DevZeroAndADirectoryAreRefused) {
   check_config("/dev/zero", "/dev/zero", "is a character device");
-  const std::string dir = ::testing::TempDir() + "/hostile_dir.json";
+  const std::string dir = scratch_dir() + "/hostile_dir.json";
   ::mkdir(dir.c_str(), 0700);
   check_config("directory", dir, "is a directory");
 }
