@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Restart under load (issue 6), in a private netns (tests/tools/run_in_netns.sh):
 # the whole stack under supervisord (deploy/refloc) drives a mission
-# (tests/ops/data/restart_mission.json) while every service in turn is killed
+# (tests/ops/data/restart_kill_mission.json: out and back, so that the seven kills fit in it
+# even when supervisorctl is slow on a loaded host) while every service in turn is killed
 # with SIGKILL. Checks: supervisord restarts it; no other program's pid changes;
 # the mission still reaches every waypoint within tolerance; from the LCM log
 # (restart_log_check): POSE gap <= 1 s per kill, the new process back to useful
@@ -84,7 +85,7 @@ for _ in $(seq 300); do
 done
 [ $missing = 0 ] || fail "not everything RUNNING: $("$refloc" status || true)"
 
-"$build/bin/refloc-mission" --mission "$repo/tests/ops/data/restart_mission.json" --json "$tmp/mission.json" \
+"$build/bin/refloc-mission" --mission "$repo/tests/ops/data/restart_kill_mission.json" --json "$tmp/mission.json" \
   --log-file "$tmp/logs/refloc.0" --plot "$tmp/path.svg" >"$tmp/mission.out" 2>&1 &
 mission_pid=$!
 for _ in $(seq 600); do

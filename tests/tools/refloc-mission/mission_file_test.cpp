@@ -57,8 +57,9 @@ TEST(MissionFile, DefaultsEqualTheStructsDefaults) {
 }
 
 TEST(MissionFile, DeployedMissionsLoad) {
-  for (const char* f : {"/deploy/config/mission_demo.json", "/tests/ops/data/restart_mission.json",
-                        "/tests/ops/data/multihost_mission.json"}) {
+  for (const char* f :
+       {"/deploy/config/mission_demo.json", "/tests/ops/data/restart_mission.json",
+        "/tests/ops/data/restart_kill_mission.json", "/tests/ops/data/multihost_mission.json"}) {
     EXPECT_GE(load_mission(std::string(REFLOC_SOURCE_DIR) + f).waypoints.size(), 2u) << f;
   }
 }
