@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
+#include <refloc/heartbeat_t.hpp>
 #include <refloc/pose2d_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
@@ -37,6 +38,23 @@ class MatcherSolverIntegration : public ::testing::Test {
     ASSERT_TRUE(solver_.start({kBin + "pose_solver", std::string("--lcm-url=") + kUrl, "--config",
                                kSource + "/deploy/config/pose_solver.json", "--robot",
                                kSource + "/deploy/config/robot.json"}));
+    // The solver must listen before the first scan: a resent scan is tracked, not relocalized,
+    // by a matcher that answered the first one while a late-started solver missed it.
+    ASSERT_TRUE(wait_for_heartbeat("pose_solver"));
+  }
+
+  bool wait_for_heartbeat(const std::string& service) {
+    awaited_service_ = service;
+    heard_awaited_ = false;
+    // LCM 1.3.1 takes no lambdas: a member handler.
+    lcm::Subscription* sub = lcm_.subscribe("HEARTBEAT", &MatcherSolverIntegration::on_heartbeat, this);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
+    while (!heard_awaited_ && std::chrono::steady_clock::now() < deadline) lcm_.handleTimeout(50);
+    lcm_.unsubscribe(sub);
+    return heard_awaited_;
+  }
+  void on_heartbeat(const lcm::ReceiveBuffer*, const std::string&, const heartbeat_t* msg) {
+    heard_awaited_ = heard_awaited_ || msg->service == awaited_service_;
   }
 
   bool start_matcher(const std::string& map_file) {
@@ -101,6 +119,8 @@ class MatcherSolverIntegration : public ::testing::Test {
   lcm::LCM lcm_{kUrl};
   std::mt19937 rng_{60};
   Pose2 robot_T_laser_;
+  std::string awaited_service_;
+  bool heard_awaited_ = false;
   std::vector<reflector_matches_t> matches_;
   std::vector<pose2d_t> poses_;
   testing::ChildProcess solver_, matcher_;
