@@ -20,31 +20,14 @@
 #include "lms100_emulator/lms100_emulator.hpp"
 #include "lms100_emulator/test_pattern_scan_source.hpp"
 
+#include "scan_sink.hpp"
+
 namespace refloc {
 namespace {
 
 using namespace std::chrono_literals;
 
-struct Sink {
-  std::mutex mutex;
-  std::vector<LaserScan> scans;
-  void add(const LaserScan& s) {
-    std::lock_guard<std::mutex> lock(mutex);
-    scans.push_back(s);
-  }
-  size_t count() {
-    std::lock_guard<std::mutex> lock(mutex);
-    return scans.size();
-  }
-  bool wait_for(size_t n, std::chrono::milliseconds timeout) {
-    const auto until = std::chrono::steady_clock::now() + timeout;
-    while (count() < n) {
-      if (std::chrono::steady_clock::now() > until) return false;
-      std::this_thread::sleep_for(2ms);
-    }
-    return true;
-  }
-};
+using Sink = testing::ScanSink;
 
 constexpr int kMergedScans = 4;
 constexpr double kStampBoundUs = 2000.0;

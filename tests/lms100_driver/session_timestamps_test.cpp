@@ -18,6 +18,8 @@
 #include "lms100_driver/lms100_session.hpp"
 #include "telegram_fixtures.hpp"
 
+#include "scan_sink.hpp"
+
 namespace refloc {
 namespace {
 
@@ -110,26 +112,7 @@ class BurstySensor {
   std::map<uint32_t, int64_t> true_first_beam_utime_;
 };
 
-struct StampedScans {
-  std::mutex mutex;
-  std::vector<LaserScan> scans;
-  void add(const LaserScan& s) {
-    std::lock_guard<std::mutex> lock(mutex);
-    scans.push_back(s);
-  }
-  size_t count() {
-    std::lock_guard<std::mutex> lock(mutex);
-    return scans.size();
-  }
-  bool wait_for(size_t n, std::chrono::milliseconds timeout) {
-    const auto until = std::chrono::steady_clock::now() + timeout;
-    while (count() < n) {
-      if (std::chrono::steady_clock::now() > until) return false;
-      std::this_thread::sleep_for(2ms);
-    }
-    return true;
-  }
-};
+using StampedScans = testing::ScanSink;
 
 /// How published stamps compare with the truth, over scans [begin, end).
 struct StampReport {
