@@ -1,6 +1,6 @@
 #pragma once
 // The command line every refloc service shares, and how its main() runs:
-// --help, --lcm-url, --config FILE, -v; usage errors reported as CLI11 does;
+// --help, --version, --lcm-url, --config FILE, -v; usage errors reported as CLI11 does (exit 64);
 // then the body under guarded_main (bad config: one line, exit 2).
 
 #include <CLI/CLI.hpp>
@@ -12,7 +12,8 @@ namespace refloc {
 
 class ServiceCommandLine {
  public:
-  /// default_config: the service's file under deploy/config ("" = built-in defaults).
+  /// default_config: the service's file under deploy/config ("" = built-in defaults), resolved
+  /// against the refloc root (shipped_path), not the working directory.
   ServiceCommandLine(std::string service_name, const std::string& description, std::string default_config);
 
   /// Adds --robot FILE (default deploy/config/robot.json) for services that need the robot geometry.
@@ -24,7 +25,7 @@ class ServiceCommandLine {
   CLI::App app;         ///< for service-specific options
   std::string lcm_url;  ///< empty: $LCM_DEFAULT_URL, else udpm with ttl=0
   std::string config_path;
-  std::string robot_path = "deploy/config/robot.json";
+  std::string robot_path;  ///< default: deploy/config/robot.json under the refloc root
   bool verbose = false;
 
  private:
