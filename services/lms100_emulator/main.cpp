@@ -1,4 +1,4 @@
-// lms100_emulator: a SICK LMS100 on TCP (CoLa-A, port 2111) for tests and demos, rendering a
+// lms100_emulator: a SICK LMS100 on TCP (CoLa-A on 2111 or CoLa-B on 2112) for tests and demos, rendering a
 // world from a static pose (--world, --pose) or a test pattern; faults from flags, the config
 // and stdin commands (--control-stdin, fault_command.hpp); HEARTBEAT with its counters over LCM.
 
@@ -13,6 +13,7 @@
 
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
+#include "lms100_emulator/emulator_config_loader.hpp"
 #include "lms100_emulator/fault_command.hpp"
 #include "lms100_emulator/lms100_emulator.hpp"
 #include "lms100_emulator/standalone_setup.hpp"
@@ -68,7 +69,7 @@ int run(const std::string& config_path, const EmulatorOverrides& overrides, bool
 int main(int argc, char** argv) {
   refloc::ServiceCommandLine cli(
       "lms100_emulator",
-      "SICK LMS100 emulator: CoLa-A over TCP, test pattern or rendered world, fault injection", "");
+      "SICK LMS100 emulator: CoLa-A or CoLa-B over TCP, test pattern or rendered world, fault injection", "");
   cli.app.get_option("--config")
       ->description(
           "emulator config (JSON; keys in emulator_config_loader.hpp, plus "
@@ -77,7 +78,10 @@ int main(int argc, char** argv) {
   bool control_stdin = false, no_lcm = false;
   CLI::App& app = cli.app;
   app.add_option("--bind", o.bind_address, "address to listen on (default 127.0.0.1)");
-  app.add_option("--port", o.port, "TCP port (default 2111; 0 = any free port)")->check(CLI::Range(0, 65535));
+  app.add_option("--protocol", o.protocol, "cola_a (default) or cola_b (binary)")
+      ->check(CLI::IsMember({"cola_a", "cola_b"}));
+  app.add_option("--port", o.port, "TCP port (default 2111 CoLa-A, 2112 CoLa-B; 0 = any free port)")
+      ->check(CLI::Range(0, 65535));
   app.add_option("--frequency", o.frequency_hz, "scan frequency [Hz]: 25 or 50 (default 50)");
   app.add_option("--resolution", o.resolution_deg, "angular resolution [deg]: 0.25 or 0.5 (default 0.5)");
   app.add_option("--spin-up-s", o.spin_up_s, "start of measurement to STlms 7 [s] (default 0.2; real ~30)")
@@ -95,6 +99,7 @@ int main(int argc, char** argv) {
   app.add_flag("--control-stdin", control_stdin,
                "read fault commands from stdin (drop N, stall MS, close, ...)");
   app.add_flag("--no-lcm", no_lcm, "no HEARTBEAT (no LCM needed)");
+  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_emulator_config(f); });
   return cli.run(argc, argv,
                  [&] { return refloc::run(cli.config_path, o, control_stdin, no_lcm, cli.lcm_url); });
 }

@@ -7,6 +7,7 @@
 #include "common/robot_config.hpp"
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
+#include "mecanum_odometry/odometry_config_file.hpp"
 #include "mecanum_odometry/odometry_node.hpp"
 
 #include <refloc/odometry_t.hpp>
@@ -55,5 +56,6 @@ int main(int argc, char** argv) {
   refloc::ServiceCommandLine cli("mecanum_odometry", "Mecanum wheel odometry: WHEEL_ENCODERS -> ODOMETRY",
                                  "");
   cli.add_robot_option("robot geometry file (JSON)");
+  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_odometry_service_config(f); });
   return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.robot_path, cli.config_path); });
 }

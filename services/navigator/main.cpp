@@ -91,5 +91,6 @@ int run(const std::string& lcm_url, const std::string& config_path) {
 int main(int argc, char** argv) {
   refloc::ServiceCommandLine cli("navigator",
                                  "Holonomic waypoint navigator: NAV_GOAL + POSE -> CMD_VEL, NAV_STATUS", "");
+  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_navigator_service_config(f); });
   return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path); });
 }

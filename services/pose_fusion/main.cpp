@@ -90,5 +90,6 @@ int main(int argc, char** argv) {
       "pose_fusion",
       "EKF fusion of wheel odometry and delayed laser pose fixes: ODOMETRY + LASER_POSE -> POSE", "");
   cli.add_robot_option("robot file (JSON): the odometry noise model");
+  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_fusion_service_config(f); });
   return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.robot_path, cli.config_path); });
 }

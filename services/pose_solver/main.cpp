@@ -66,5 +66,6 @@ int main(int argc, char** argv) {
                                  "Pose solver: REFLECTOR_MATCHES -> LASER_POSE (map_T_robot with covariance)",
                                  "deploy/config/pose_solver.json");
   cli.add_robot_option("robot geometry file with /laser_mount (JSON)");
+  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_solver_service_config(f); });
   return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path, cli.robot_path); });
 }

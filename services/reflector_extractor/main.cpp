@@ -76,5 +76,6 @@ int main(int argc, char** argv) {
       "reflector_extractor: laser scans in, retro-reflector detections out (LCM service)",
       "deploy/config/reflector_extractor.json");
   cli.add_robot_option("robot config with the laser mount (robot_T_laser)");
+  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_extractor_service_config(f); });
   return cli.run(argc, argv, [&] { return refloc::run(cli.lcm_url, cli.config_path, cli.robot_path); });
 }

@@ -69,6 +69,7 @@ int main(int argc, char** argv) {
   cli.add_robot_option("robot geometry file with /laser_mount (JSON)");
   std::string map_override;
   cli.app.add_option("--map", map_override, "reflector map file, overrides the config's map_file");
+  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_matcher_service_config(f, "."); });
   return cli.run(argc, argv,
                  [&] { return refloc::run(cli.lcm_url, cli.config_path, cli.robot_path, map_override); });
 }

@@ -95,5 +95,6 @@ int main(int argc, char** argv) {
                  "address the LMS100 emulator listens on (default 127.0.0.1; the computer's LAN address "
                  "when lms100_driver runs on another computer)");
   app.add_flag("--no-laser", o.no_laser, "run without the emulated LMS100");
+  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_sim_setup(f, "."); });
   return cli.run(argc, argv, [&] { return refloc::run(cli, o); });
 }

@@ -32,6 +32,11 @@ struct SimOverrides {
   std::string sensor_bind_address;
 };
 
+class JsonConfig;
+
+/// Reads robot_sim's keys from a loaded file; world_file is taken relative to base_dir.
+SimSetup parse_sim_setup(const JsonConfig& file, const std::string& base_dir);
+
 /// Reads config_path (the defaults when empty), every key checked and unknown keys refused,
 /// then applies the overrides; throws ConfigError naming file and key.
 SimSetup load_sim_setup(const std::string& config_path, const SimOverrides& overrides);
