@@ -34,7 +34,8 @@ TEST(ServiceCommandLine, CommonOptionsReachTheBody) {
     return 0;
   });
   EXPECT_EQ(rc, 0);
-  EXPECT_EQ(seen_config, "deploy/config/test.json");
+  // The default names a shipped file under the refloc root, not the working directory.
+  EXPECT_EQ(seen_config, std::string(REFLOC_SOURCE_DIR) + "/deploy/config/test.json");
   EXPECT_EQ(seen_url, "udpm://239.255.76.67:7667?ttl=0");
   EXPECT_EQ(seen_robot, "r.json");
 }
