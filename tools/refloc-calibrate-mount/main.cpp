@@ -3,6 +3,7 @@
 // ODOMETRY against LASER_POSE (see mount_calibration.hpp). Prints the robot.json snippet.
 
 #include "common/guarded_main.hpp"
+#include "common/program_version.hpp"
 #include "mount_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -10,7 +11,9 @@
 int main(int argc, char** argv) {
   CLI::App app{
       "refloc-calibrate-mount: estimate robot.json's laser_mount from a calibration drive's LCM log"};
+  refloc::add_version_flag(app, "refloc-calibrate-mount");
   refloc::MountCommandOptions o;
+  o.robot_path = refloc::shipped_path(o.robot_path);  // any working directory
   app.add_option("--log", o.log_path, "LCM log of the drive (ODOMETRY, LASER_POSE)")->required();
   app.add_option("--robot", o.robot_path, "robot file the services ran with (configured mount, noise)")
       ->capture_default_str();
@@ -38,7 +41,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : refloc::kExitConfigError;
+    return app.exit(e) == 0 ? 0 : refloc::kExitUsageError;  // --help/--version: 0
   }
   return refloc::guarded_main("refloc-calibrate-mount", [&] { return refloc::run_mount_calibration(o); });
 }

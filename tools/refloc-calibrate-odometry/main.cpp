@@ -3,6 +3,7 @@
 // corrected robot.json values.
 
 #include "common/guarded_main.hpp"
+#include "common/program_version.hpp"
 #include "odometry_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -11,7 +12,9 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"refloc-calibrate-odometry: estimate wheel radius and lx + ly from a drive's LCM log"};
+  refloc::add_version_flag(app, "refloc-calibrate-odometry");
   refloc::OdometryCommandOptions o;
+  o.robot_path = refloc::shipped_path(o.robot_path);  // any working directory
   std::vector<double> mount, true_mount;
   app.add_option("--log", o.log_path, "LCM log of the drive (WHEEL_ENCODERS, LASER_POSE)")->required();
   app.add_option("--robot", o.robot_path, "robot file the services ran with (nominal geometry, mount)")
@@ -45,7 +48,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : refloc::kExitConfigError;
+    return app.exit(e) == 0 ? 0 : refloc::kExitUsageError;  // --help/--version: 0
   }
   if (mount.size() == 3) o.robot_T_laser = refloc::Pose2{mount[0], mount[1], mount[2]};
   if (true_mount.size() == 3)

@@ -6,11 +6,13 @@
 
 #include "calibration_command.hpp"
 #include "common/guarded_main.hpp"
+#include "common/program_version.hpp"
 
 #include <CLI/CLI.hpp>
 
 int main(int argc, char** argv) {
   CLI::App app{"refloc-calibrate-roundness: fit the paper's roundness line (d-bar against distance, §3.4)"};
+  refloc::add_version_flag(app, "refloc-calibrate-roundness");
   refloc::CalibrationOptions o;
   app.add_option("--log", o.log_path, "LCM log with REFLECTORS messages (default: simulate)");
   app.add_option("--channel", o.channel, "channel of the detections in the log")->capture_default_str();
@@ -40,6 +42,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--seed", o.seed, "random seed")->capture_default_str();
   app.add_option("--csv", o.csv_path, "also write the samples to this CSV file");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : refloc::kExitUsageError;  // --help/--version: 0
+  }
   return refloc::guarded_main("refloc-calibrate-roundness", [&] { return refloc::run_calibration(o); });
 }

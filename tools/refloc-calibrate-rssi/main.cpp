@@ -7,6 +7,7 @@
 // Exit 0 with a recommendation, 1 without one (not separable, no reflector), 2 bad input.
 
 #include "common/guarded_main.hpp"
+#include "common/program_version.hpp"
 #include "rssi_calibration_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -15,6 +16,7 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"refloc-calibrate-rssi: RSSI of reflector and other beams in a log, and an energy threshold"};
+  refloc::add_version_flag(app, "refloc-calibrate-rssi");
   refloc::RssiCalibrationOptions o;
   app.add_option("--log", o.log_path, "LCM log with laser scans")->required()->check(CLI::ExistingFile);
   app.add_option("--channel", o.channel, "channel of the scans")->capture_default_str();
@@ -45,7 +47,7 @@ int main(int argc, char** argv) {
     if (!std::is_sorted(o.band_edges.begin(), o.band_edges.end()))
       throw CLI::ValidationError("--band-edges-m", "must be increasing");
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : refloc::kExitConfigError;
+    return app.exit(e) == 0 ? 0 : refloc::kExitUsageError;  // --help/--version: 0
   }
   return refloc::guarded_main("refloc-calibrate-rssi", [&] { return refloc::run_rssi_calibration(o); });
 }

@@ -5,6 +5,7 @@
 
 #include "common/guarded_main.hpp"
 #include "common/json_config.hpp"
+#include "common/program_version.hpp"
 #include "config_check.hpp"
 
 #include <fmt/format.h>
@@ -26,6 +27,7 @@ void report(const std::string& path, const refloc::FileCheck& check, bool strict
 
 int main(int argc, char** argv) {
   CLI::App app{"Validate refloc map and config files; exit 2 naming file and key on the first error"};
+  refloc::add_version_flag(app, "refloc-config-check");
   std::vector<std::string> map_files;
   std::vector<std::string> config_files;
   bool strict = false;
@@ -34,10 +36,14 @@ int main(int argc, char** argv) {
                  "service config file, SERVICE=FILE or named after its service (reflector_extractor.json); "
                  "may be repeated");
   app.add_flag("--strict", strict, "warnings (colinear map) fail with exit 2");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : refloc::kExitUsageError;  // --help/--version: 0
+  }
   if (map_files.empty() && config_files.empty()) {
     std::fprintf(stderr, "refloc-config-check: give at least one --map or --config\n%s", app.help().c_str());
-    return 1;
+    return refloc::kExitUsageError;
   }
   return refloc::guarded_main("refloc-config-check", [&] {
     for (const auto& path : map_files) report(path, refloc::check_map_file(path), strict);

@@ -4,6 +4,7 @@
 
 #include "common/guarded_main.hpp"
 #include "common/json_config.hpp"
+#include "common/program_version.hpp"
 #include "load_verdict.hpp"
 #include "log_analysis.hpp"
 #include "log_report.hpp"
@@ -89,8 +90,13 @@ int run(CommandLine c) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Summarize an LCM log, export channels to CSV/JSON lines, measure scan-to-pose latency"};
+  refloc::add_version_flag(app, "refloc-log");
   CommandLine command_line;
   add_options(app, command_line);
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : refloc::kExitUsageError;  // --help/--version: 0
+  }
   return refloc::guarded_main("refloc-log", [&] { return run(command_line); });
 }

@@ -10,6 +10,7 @@
 #include "common/clock.hpp"
 #include "common/guarded_main.hpp"
 #include "common/json_config.hpp"
+#include "common/program_version.hpp"
 #include "common/service_runtime.hpp"
 
 #include <CLI/CLI.hpp>
@@ -67,6 +68,7 @@ int run(Options o) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Run lcm-logger and publish its health as HEARTBEAT service lcm_logger"};
+  refloc::add_version_flag(app, "refloc-logger-watch");
   refloc::Options o;
   app.add_option("--lcm-url", o.lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
   app.add_option("--log-file", o.log_file, "the file the logger writes (with --rotate: PREFIX.0)")
@@ -80,7 +82,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1.0, 3600.0))
       ->capture_default_str();
   app.add_option("command", o.logger_command, "the logger and its arguments, after --")->required();
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : refloc::kExitUsageError;  // --help/--version: 0
+  }
   return refloc::guarded_main("refloc-logger-watch", [&] {
     refloc::setup_logging("lcm_logger");
     return refloc::run(o);
