@@ -2,6 +2,7 @@
 
 #include "accuracy_study.hpp"
 #include "common/json_config.hpp"
+#include "common/program_version.hpp"
 #include "common/reflector_map.hpp"
 #include "common/robot_config.hpp"
 #include "eval_report.hpp"
@@ -39,7 +40,8 @@ sim::Lms100ErrorModel sensor_model(const EvalOptions& o) {
 int run_eval(const std::string& command, EvalOptions o) {
   const bool paper_table = command == "paper-table";
   if (o.world_file.empty())
-    o.world_file = paper_table ? "deploy/config/paper_cell.json" : "deploy/config/world_demo.json";
+    o.world_file =
+        shipped_path(paper_table ? "deploy/config/paper_cell.json" : "deploy/config/world_demo.json");
   if (o.out_prefix.empty()) {
     o.out_prefix = !o.json_file.empty() && o.json_file.size() > 5 &&
                            o.json_file.compare(o.json_file.size() - 5, 5, ".json") == 0
