@@ -5,6 +5,7 @@
 #include "common/clock.hpp"
 #include "common/guarded_main.hpp"
 #include "common/lcm_conversions.hpp"
+#include "common/program_version.hpp"
 #include "common/service_runtime.hpp"
 #include "heartbeat_from_lcm.hpp"
 #include "mission_monitor.hpp"
@@ -96,14 +97,19 @@ int run(const MissionFiles& files, const std::string& mission_file, const std::s
 
 int main(int argc, char** argv) {
   CLI::App app{"Send a mission to the running refloc stack and report arrival and localization errors"};
-  std::string mission_file = "deploy/config/mission_demo.json", lcm_url;
+  refloc::add_version_flag(app, "refloc-mission");
+  std::string mission_file = refloc::shipped_path("deploy/config/mission_demo.json"), lcm_url;
   refloc::MissionFiles f;
   app.add_option("--mission", mission_file, "mission file (JSON waypoints)")->capture_default_str();
   app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
   app.add_option("--json", f.json_file, "write the results as JSON to this file");
   app.add_option("--log-file", f.log_file, "the LCM log recorded alongside (reported in the JSON)");
   app.add_option("--plot", f.plot_file, "SVG plot of true vs estimated path (default: <log-file>.svg)");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : refloc::kExitUsageError;  // --help/--version: 0
+  }
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines as they happen, also into a pipe
   return refloc::guarded_main("refloc-mission", [&] { return refloc::run(f, mission_file, lcm_url); });
 }
