@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   default-jdk-headless libjchart2d-java
   supervisor iproute2 util-linux procps python3 jq
+  python3-matplotlib
   clang-format git
   libceres-dev
 )

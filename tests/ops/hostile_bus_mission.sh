@@ -73,7 +73,7 @@ done
 [ $missing = 0 ] || fatal "not everything RUNNING: $("$refloc" status || true)"
 
 "$build/bin/refloc-mission" --mission "$repo/tests/ops/data/restart_mission.json" --json "$tmp/mission.json" \
-  --log-file "$tmp/logs/refloc.0" --plot "$tmp/path.svg" >"$tmp/mission.out" 2>&1 &
+  --log-file "$tmp/logs/refloc.0" --trace "$tmp/path_trace.csv" >"$tmp/mission.out" 2>&1 &
 mission_pid=$!
 for _ in $(seq 600); do
   grep -q "^sent mission" "$tmp/mission.out" && break

@@ -5,8 +5,8 @@
 #include "common/program_version.hpp"
 #include "common/reflector_map.hpp"
 #include "common/robot_config.hpp"
+#include "eval_plot.hpp"
 #include "eval_report.hpp"
-#include "path_plot_svg.hpp"
 #include "world_renderer/world_loader.hpp"
 
 #include <fmt/format.h>
@@ -89,16 +89,26 @@ int run_eval(const std::string& command, EvalOptions o) {
   if (paper_table) j["paper_reported"] = {{"mean_max_err_x_mm", 14.3}, {"mean_max_err_y_mm", 14.7}};
   if (!o.json_file.empty()) std::ofstream(o.json_file) << j.dump(2) << "\n";
   std::ofstream(o.out_prefix + ".csv") << measurements_csv(r.measurements);
-  std::vector<PlotSeries> series = {
-      {"paper mode error [mm]", "#ff7f0e", errors_mm(r, PipelineMode::kPaper), true},
-      {"default mode error [mm]", "#1f77b4", errors_mm(r, PipelineMode::kDefault), true}};
-  if (paper_table)
-    series.insert(series.begin(),
-                  {"paper's Table 1 (real) [mm]", "#999999", paper_reported_errors_mm(), true});
-  write_path_plot_svg(o.out_prefix + ".svg",
-                      fmt::format("refloc-eval {}: position error (x, y) per scan [mm]", command), series);
-  fmt::print("wrote {}.csv and {}.svg{}\n", o.out_prefix, o.out_prefix,
-             o.json_file.empty() ? "" : " and " + o.json_file);
+  std::vector<std::string> plot = {"eval",
+                                   "--csv",
+                                   o.out_prefix + ".csv",
+                                   "--world",
+                                   o.world_file,
+                                   "--out",
+                                   o.out_prefix + ".png",
+                                   "--out",
+                                   o.out_prefix + ".svg",
+                                   "--title",
+                                   fmt::format("refloc-eval {} ({} poses x {} scans, world {})", command,
+                                               poses.size(), config.repeats, o.world_file)};
+  if (paper_table) {
+    std::ofstream(o.out_prefix + ".paper.csv") << paper_reported_errors_csv();
+    plot.insert(plot.end(), {"--reference", o.out_prefix + ".paper.csv"});
+  }
+  fmt::print("wrote {}.csv{}\n", o.out_prefix, o.json_file.empty() ? "" : " and " + o.json_file);
+  // The numbers are the result; a missing matplotlib costs only the picture.
+  if (run_refloc_plot(plot) != 0)
+    fmt::print(stderr, "refloc-eval: no picture (tools/refloc-plot needs python3 and python3-matplotlib)\n");
   return 0;
 }
 

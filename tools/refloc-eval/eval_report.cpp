@@ -114,24 +114,4 @@ void print_paper_table(const StudyResult& r, const std::vector<Pose2>& poses, in
   fmt::print("\npaper (LabVIEW, real LMS100): mean max err x 14.30 mm  y 14.70 mm\n");
 }
 
-std::vector<Eigen::Vector2d> errors_mm(const StudyResult& r, PipelineMode mode) {
-  std::vector<Eigen::Vector2d> e;
-  for (const auto& m : r.measurements) {
-    if (m.mode == mode && m.published_ok && !m.wrong) {
-      e.push_back(1000.0 * Eigen::Vector2d(m.estimate.x - m.truth.x, m.estimate.y - m.truth.y));
-    }
-  }
-  return e;
-}
-
-std::vector<Eigen::Vector2d> paper_reported_errors_mm() {
-  const double d[30][2] = {
-      {5, 10},   {-12, 9},  {12, 13}, {8, 11}, {-9, 12}, {17, -14}, {10, -11}, {6, 9},   {-11, 15}, {7, 11},
-      {10, 9},   {-12, 15}, {20, 9},  {-9, 7}, {6, 10},  {-6, 7},   {6, 11},   {8, 10},  {60, 15},  {7, 8},
-      {-10, 13}, {14, 17},  {23, 8},  {9, 4},  {15, 1},  {-10, 18}, {12, 11},  {16, 19}, {11, 13},  {12, 15}};
-  std::vector<Eigen::Vector2d> e;
-  for (const auto& p : d) e.emplace_back(p[0], p[1]);
-  return e;
-}
-
 }  // namespace refloc

@@ -1,5 +1,5 @@
 #pragma once
-// refloc-eval's console tables, JSON, CSV and SVG of a study's result.
+// refloc-eval's console tables and JSON of a study's result (eval_plot.hpp: its picture).
 
 #include "accuracy_study.hpp"
 #include "world_renderer/lms100_error_model.hpp"
@@ -23,9 +23,5 @@ void print_progress(size_t done, size_t total);
 void print_summary(const char* name, const ModeSummary& s);
 /// The paper's Table 1 layout: per position the measurements, max errors, RMSE and CRLB.
 void print_paper_table(const StudyResult& r, const std::vector<Pose2>& poses, int repeats);
-/// Position errors of the published, not wrong, measurements of mode [mm].
-std::vector<Eigen::Vector2d> errors_mm(const StudyResult& r, PipelineMode mode);
-/// The paper's own Table 1 errors (measured minus actual), for the plot [mm].
-std::vector<Eigen::Vector2d> paper_reported_errors_mm();
 
 }  // namespace refloc

@@ -104,7 +104,8 @@ int main(int argc, char** argv) {
   app.add_option("--lcm-url", lcm_url, "LCM URL (default: $LCM_DEFAULT_URL or udpm ttl=0)");
   app.add_option("--json", f.json_file, "write the results as JSON to this file");
   app.add_option("--log-file", f.log_file, "the LCM log recorded alongside (reported in the JSON)");
-  app.add_option("--plot", f.plot_file, "SVG plot of true vs estimated path (default: <log-file>.svg)");
+  app.add_option("--trace", f.trace_file,
+                 "CSV of the paths and errors for tools/refloc-plot (default: <log-file>.trace.csv)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

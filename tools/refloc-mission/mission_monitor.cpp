@@ -25,6 +25,7 @@ MissionMonitor::MissionMonitor(Mission mission, const MissionProgressConfig& pro
 void MissionMonitor::on_ground_truth(int64_t utime, const Pose2& map_T_robot) {
   truth_.add(utime, map_T_robot);
   latest_truth_ = map_T_robot;
+  latest_truth_utime_ = utime;
   has_truth_ = true;
 }
 
@@ -72,6 +73,7 @@ std::vector<size_t> MissionMonitor::on_status(int64_t goal_id, NavStatusState st
     if (has_truth_) {
       r.error_xy_m = std::hypot(latest_truth_.x - r.target.x, latest_truth_.y - r.target.y);
       r.error_heading_rad = angle_diff(latest_truth_.theta, r.target.theta);
+      r.reached_utime = latest_truth_utime_;
     }
     reached.push_back(i);
   }
@@ -167,18 +169,25 @@ nlohmann::json MissionMonitor::report(const std::string& log_file) const {
   return j;
 }
 
-std::vector<PlotSeries> MissionMonitor::plot_series() const {
-  auto points = [](const Trajectory& t) {
-    std::vector<Eigen::Vector2d> p;
-    for (const auto& s : t.samples()) p.push_back(s.pose.translation());
-    return p;
-  };
-  std::vector<Eigen::Vector2d> targets;
-  for (const auto& w : mission_.waypoints) targets.push_back(w.translation());
-  return {{"ground truth", "black", points(truth_), false},
-          {"POSE (fused)", "#1f77b4", points(pose_), false},
-          {"LASER_POSE", "#ff7f0e", points(laser_pose_), true},
-          {"waypoints", "#d62728", targets, true}};
+PathTrace MissionMonitor::path_trace() const {
+  PathTrace trace;
+  trace.start_utime = drive_start_utime_;
+  for (const auto& s : truth_.samples()) {
+    if (s.utime >= drive_start_utime_ && (driving_ || s.utime <= drive_end_utime_))
+      trace.samples.push_back({"GROUND_TRUTH", s.utime, s.pose, NAN});
+  }
+  // The error at a stamp the way compare() takes it for the RMSE.
+  for (const auto& [channel, estimate] : {std::pair{"POSE", &pose_}, std::pair{"LASER_POSE", &laser_pose_}}) {
+    for (const auto& s : estimate->samples()) {
+      if (s.utime < drive_start_utime_) continue;
+      const auto truth = truth_.at(s.utime);
+      const double error_m = truth ? std::hypot(s.pose.x - truth->x, s.pose.y - truth->y) : NAN;
+      trace.samples.push_back({channel, s.utime, s.pose, error_m});
+    }
+  }
+  for (const auto& r : results_)
+    trace.waypoints.push_back({r.target, r.reached, r.reached_utime, r.error_xy_m});
+  return trace;
 }
 
 double MissionMonitor::odometry_drift_m() const {

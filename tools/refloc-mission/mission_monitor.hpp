@@ -3,12 +3,12 @@
 // POSE / LASER_POSE (with their covariances) / ODOMETRY recorded while driving; the
 // navigator's progress (MissionProgress: which goal to send when); the true arrival error
 // at each waypoint; pose_solver's range bias estimate from HEARTBEAT; the timeout; and the
-// report (JSON, plot series).
+// report (JSON, the plot's trace).
 
 #include "heartbeat_table.hpp"
 #include "mission_file.hpp"
 #include "mission_progress.hpp"
-#include "path_plot_svg.hpp"
+#include "path_plot_trace.hpp"
 #include "trajectory.hpp"
 #include "trajectory_consistency.hpp"
 
@@ -27,6 +27,7 @@ struct WaypointResult {
   bool reached = false;
   double error_xy_m = NAN;         ///< true position error when reached (GROUND_TRUTH) [m]
   double error_heading_rad = NAN;  ///< true heading error when reached [rad]
+  int64_t reached_utime = 0;       ///< stamp of the GROUND_TRUTH it was judged by [us]
 };
 
 /// A NAV_GOAL to publish (nav_goal_t without the LCM type): the waypoints not reached yet.
@@ -85,8 +86,8 @@ class MissionMonitor {
 
   /// The JSON refloc-mission --json writes (scripts read its keys).
   nlohmann::json report(const std::string& log_file) const;
-  /// Ground truth, POSE, LASER_POSE and the waypoints, for the SVG plot.
-  std::vector<PlotSeries> plot_series() const;
+  /// Ground truth, POSE and LASER_POSE (with their errors) while driving, and the waypoints, for the plot.
+  PathTrace path_trace() const;
 
  private:
   /// Odometry alone, anchored to the truth at the first odometry sample of the run [m].
@@ -99,6 +100,7 @@ class MissionMonitor {
   std::vector<StampedFix> pose_fixes_, laser_fixes_;         ///< pose_ and laser_pose_ with covariances
   std::optional<double> range_bias_m_, range_bias_sigma_m_;  ///< pose_solver's latest [m]
   Pose2 latest_truth_;
+  int64_t latest_truth_utime_ = 0;
   bool has_truth_ = false;
   bool localized_ = false;
   bool driving_ = false;

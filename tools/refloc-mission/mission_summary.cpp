@@ -64,12 +64,14 @@ std::string write_mission_results(const MissionMonitor& monitor, const MissionFi
     std::ofstream json(files.json_file);
     if (!(json << report.dump(2) << "\n")) throw ConfigError(files.json_file + ": cannot write");
   }
-  const std::string plot = !files.plot_file.empty() ? files.plot_file
-                           : files.log_file.empty() ? ""
-                                                    : files.log_file + ".svg";
-  if (plot.empty()) return out;
-  write_path_plot_svg(plot, "refloc mission: true vs estimated path", monitor.plot_series());
-  return out + fmt::format("path plot: {}\n", plot);
+  const std::string trace = !files.trace_file.empty() ? files.trace_file
+                            : files.log_file.empty()  ? ""
+                                                      : files.log_file + ".trace.csv";
+  if (trace.empty()) return out;
+  // The summary is the run's result: a trace that cannot be written does not hide it.
+  if (!write_path_trace_csv(trace, monitor.path_trace()))
+    return out + fmt::format("path trace NOT written: {}: cannot write\n", trace);
+  return out + fmt::format("path trace (tools/refloc-plot/refloc-plot.py mission draws it): {}\n", trace);
 }
 
 }  // namespace refloc

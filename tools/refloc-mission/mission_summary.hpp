@@ -1,6 +1,6 @@
 #pragma once
 // refloc-mission's output: lines for a terminal (and the scripts that grep them) for a
-// goal sent, a waypoint reached and the summary at the end; the JSON report and SVG plot.
+// goal sent, a waypoint reached and the summary at the end; the JSON report and the plot's trace.
 
 #include "mission_monitor.hpp"
 
@@ -24,11 +24,12 @@ std::string format_mission_summary(const nlohmann::json& report);
 struct MissionFiles {
   std::string json_file;  ///< MissionMonitor::report()
   std::string log_file;   ///< the LCM log recorded alongside: named in the JSON
-  std::string plot_file;  ///< SVG of the paths; default <log_file>.svg when a log file is named
+  /// CSV for tools/refloc-plot (path_plot_trace.hpp); default <log_file>.trace.csv when a log file is named
+  std::string trace_file;
 };
 
-/// Writes the report and the plot; returns the summary and the plot's path for the terminal.
-/// Throws ConfigError when the JSON file cannot be written.
+/// Writes the report and the plot's trace; returns the summary and the trace's path for the
+/// terminal (or that it could not be written). Throws ConfigError when the JSON file cannot be written.
 std::string write_mission_results(const MissionMonitor& monitor, const MissionFiles& files);
 
 }  // namespace refloc

@@ -194,14 +194,33 @@ TEST(MissionMonitor, OdometryDriftIsMeasuredOverTheLatestOdometryFrame) {
   EXPECT_THAT(format_mission_summary(r), HasSubstr("10.0 mm (since the last odometry restart)"));
 }
 
-TEST(MissionMonitor, PlotHasTruthPoseLaserPoseAndWaypoints) {
+TEST(MissionMonitor, TraceHasTruthEstimatesWithTheirErrorsAndWaypointArrivals) {
   MissionMonitor m(two_waypoints());
-  const auto series = m.plot_series();
-  ASSERT_EQ(series.size(), 4u);
-  EXPECT_EQ(series[0].label, "ground truth");
-  EXPECT_EQ(series[3].label, "waypoints");
-  ASSERT_EQ(series[3].points.size(), 2u);
-  EXPECT_DOUBLE_EQ(series[3].points[1].x(), 2.0);
+  m.on_ground_truth(5, {0.0, 0.0, 0.0});  // before driving: not in the trace
+  m.start_driving(10, 0);
+  m.on_ground_truth(10, {0.0, 0.0, 0.0});
+  m.on_ground_truth(30, {1.0, 0.0, 0.0});
+  m.on_pose(20, {0.5, 0.003, 0.0}, true, kCovariance);          // truth at 20: (0.5, 0): 3 mm
+  m.on_laser_pose(20, {0.504, 0.003, 0.0}, true, kCovariance);  // 5 mm
+  const auto goal = m.goal_due(30, 0);
+  ASSERT_TRUE(goal);
+  m.on_status(goal->goal_id, NavStatusState::kDriving, 1, "", 0);
+  m.stop_driving(40);
+  const PathTrace trace = m.path_trace();
+  EXPECT_EQ(trace.start_utime, 10);
+  ASSERT_EQ(trace.samples.size(), 4u);
+  EXPECT_EQ(trace.samples[0].channel, "GROUND_TRUTH");
+  EXPECT_EQ(trace.samples[0].utime, 10);
+  EXPECT_EQ(trace.samples[2].channel, "POSE");
+  EXPECT_NEAR(trace.samples[2].error_m, 0.003, 1e-9);
+  EXPECT_EQ(trace.samples[3].channel, "LASER_POSE");
+  EXPECT_NEAR(trace.samples[3].error_m, 0.005, 1e-9);
+  ASSERT_EQ(trace.waypoints.size(), 2u);
+  EXPECT_TRUE(trace.waypoints[0].reached);
+  EXPECT_EQ(trace.waypoints[0].reached_utime, 30);  // the truth it was judged by
+  EXPECT_NEAR(trace.waypoints[0].error_m, 0.0, 1e-12);
+  EXPECT_FALSE(trace.waypoints[1].reached);
+  EXPECT_DOUBLE_EQ(trace.waypoints[1].target.x, 2.0);
 }
 
 }  // namespace
