@@ -5,8 +5,26 @@ namespace refloc {
 DriverServiceConfig parse_driver_config(const JsonConfig& file) {
   DriverServiceConfig c;
   Lms100SessionConfig& s = c.session;
-  const long long frequency_hz = file.integer("/frequency_hz", 50, 25, 50);
-  if (frequency_hz != 25 && frequency_hz != 50) file.fail("/frequency_hz", "expected 50 or 25");
+  s.host = file.string("/host", s.host);
+  if (s.host.empty()) file.fail("/host", "must not be empty (the sensor's address, e.g. 192.168.0.1)");
+  s.dialect = file.choice("/protocol", "cola_a", {"cola_a", "cola_b"}) == "cola_b" ? ColaDialect::kColaB
+                                                                                   : ColaDialect::kColaA;
+  s.port = static_cast<uint16_t>(file.integer("/port", default_port(s.dialect), 1, 65535));
+  const std::string device_name = file.string("/device", s.device.name);
+  const DeviceProfile* device = find_device_profile(device_name);
+  if (device == nullptr)
+    file.fail("/device", "expected one of " + device_profile_names() + ", got '" + device_name + "'");
+  s.device = *device;
+
+  const double frequency_hz = file.number("/frequency_hz", s.device.default_frequency_hz, 1, 100);
+  bool frequency_known = false;
+  for (const double f : s.device.scan_frequencies_hz) frequency_known = frequency_known || f == frequency_hz;
+  if (!frequency_known) {
+    std::string allowed;
+    for (const double f : s.device.scan_frequencies_hz)
+      allowed += (allowed.empty() ? "" : ", ") + std::to_string(static_cast<int>(f));
+    file.fail("/frequency_hz", "expected one of " + allowed + " for device " + s.device.name);
+  }
   const double resolution_deg = file.number("/resolution_deg", 0.5, 0.25, 0.5);
   if (resolution_deg != 0.25 && resolution_deg != 0.5) file.fail("/resolution_deg", "expected 0.5 or 0.25");
   if (frequency_hz == 50 && resolution_deg == 0.25) {
@@ -15,9 +33,15 @@ DriverServiceConfig parse_driver_config(const JsonConfig& file) {
   }
   s.scan.frequency_1e2hz = static_cast<uint32_t>(frequency_hz * 100);
   s.scan.resolution_1e4deg = resolution_deg == 0.25 ? 2500 : 5000;
-  s.set_scan_config = file.boolean("/set_scan_config", s.set_scan_config);
+  s.set_scan_config = file.boolean("/set_scan_config", s.device.lms1xx_scan_config);
+  if (s.set_scan_config && !s.device.lms1xx_scan_config) {
+    file.fail("/set_scan_config",
+              "the driver's mLMPsetscancfg is the LMS1xx's (-45..225 deg); set the scan "
+              "configuration of a " +
+                  s.device.name + " with SOPAS ET and set this false");
+  }
 
-  const long long rssi_bits = file.integer("/rssi_bits", 16, 0, 16);
+  const long long rssi_bits = file.integer("/rssi_bits", s.device.default_rssi_bits, 0, 16);
   if (rssi_bits != 0 && rssi_bits != 8 && rssi_bits != 16)
     file.fail("/rssi_bits", "expected 16, 8 or 0 (off)");
   s.output.rssi = rssi_bits != 0;

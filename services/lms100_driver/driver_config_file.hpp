@@ -15,7 +15,7 @@ struct DriverServiceConfig {
 };
 
 /// Reads every key (all optional, range-checked); throws ConfigError naming file and key.
-/// host and port come from the command line, not from here.
+/// The command line's --host and --port override /host and /port.
 DriverServiceConfig parse_driver_config(const JsonConfig& file);
 /// The file at path, every key checked and unknown keys refused; the defaults when path is empty.
 DriverServiceConfig load_driver_config_file(const std::string& path);

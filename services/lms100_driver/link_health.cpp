@@ -27,6 +27,7 @@ std::vector<std::pair<const char*, int64_t>> link_counters(const Lms100SessionCo
           {"scan_counter_gaps", v(c.scan_counter_gaps)},
           {"lost_scans", v(c.lost_scans)},
           {"implausible_scans", v(c.implausible_scans)},
+          {"multi_layer_scans", v(c.multi_layer_scans)},
           {"implausible_scale", v(c.implausible_scale)},
           {"implausible_offset", v(c.implausible_offset)},
           {"implausible_scan_frequency", v(c.implausible_scan_frequency)},

@@ -11,9 +11,6 @@
 #include <fmt/format.h>
 
 #include "common/clock.hpp"
-#include "lms100_driver/cola_a_format.hpp"
-#include "lms100_driver/lmd_scandata_parser.hpp"
-#include "lms100_driver/scan_conversion.hpp"
 
 namespace refloc {
 
@@ -43,7 +40,7 @@ Lms100Session::Lms100Session(Lms100SessionConfig config, ScanCallback on_scan, S
     : config_(std::move(config)),
       on_scan_(std::move(on_scan)),
       on_state_(std::move(on_state)),
-      splitter_(config_.max_frame_bytes),
+      wire_(config_.dialect, config_.max_frame_bytes),
       receive_buffer_(65536),
       stamper_(config_.stamping) {
   if (::pipe2(wake_pipe_, O_CLOEXEC | O_NONBLOCK) != 0) {
@@ -113,7 +110,7 @@ void Lms100Session::run() {
 }
 
 std::string Lms100Session::run_connection() {
-  const std::string where = fmt::format("{}:{}", config_.host, config_.port);
+  const std::string where = fmt::format("{}:{} ({})", config_.host, config_.port, to_string(config_.dialect));
   set_state(SessionState::kConnecting, "connecting to " + where);
   if (const ParseResult r =
           link_.connect(config_.host, config_.port, config_.connect_timeout_s, wake_pipe_[0]);
@@ -122,7 +119,7 @@ std::string Lms100Session::run_connection() {
     return r.error;
   }
   ++counters_.connects;
-  splitter_.reset();
+  wire_.reset();
   stamper_.reset();
   publish_stamped_scans();  // nothing to publish: brings the counters up to date
   have_last_scan_counter_ = false;

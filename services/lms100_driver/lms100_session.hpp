@@ -1,8 +1,8 @@
 #pragma once
-// One LMS100 over CoLa-A/TCP, kept alive forever: connect, configure, wait
-// until ready, stream scans to a callback; on any failure close the socket,
-// back off (0.5 s doubling to 5 s) and start over. Never exits on a sensor
-// fault, never busy-loops. (docs/lms100-protocol.md §4, §7.)
+// One LMS100 (or another SICK scanner of a device profile) over CoLa-A or CoLa-B/TCP, kept alive forever:
+// connect, configure, wait until ready, stream scans to a callback; on any failure close the socket, back off
+// (0.5 s doubling to 5 s) and start over. Never exits on a sensor fault, never busy-loops.
+// (docs/lms100-protocol.md §4, §7.)
 
 #include <atomic>
 #include <cstdint>
@@ -14,7 +14,8 @@
 #include "common/cola_a_framing.hpp"
 #include "common/laser_scan.hpp"
 #include "lms100_driver/cola_a_commands.hpp"
-#include "lms100_driver/cola_a_splitter.hpp"
+#include "lms100_driver/cola_wire.hpp"
+#include "lms100_driver/device_profile.hpp"
 #include "lms100_driver/lmd_scandata.hpp"
 #include "lms100_driver/scan_plausibility.hpp"
 #include "lms100_driver/scan_stamper.hpp"
@@ -25,7 +26,9 @@ namespace refloc {
 struct Lms100SessionConfig {
   std::string host = "192.168.0.1";
   uint16_t port = 2111;
-  ScanConfig scan;  ///< sent with mLMPsetscancfg when set_scan_config
+  ColaDialect dialect = ColaDialect::kColaA;  ///< the same dialogue in either (cola_wire.hpp)
+  DeviceProfile device = lms1xx_profile();    ///< limits scans are checked against, range limits
+  ScanConfig scan;                            ///< sent with mLMPsetscancfg when set_scan_config
   bool set_scan_config = true;
   ScanDataOutputConfig output;
   double connect_timeout_s = 2.0;     ///< [s]
@@ -65,6 +68,7 @@ struct Lms100SessionCounters {
   std::atomic<uint64_t> lost_scans{0};         ///< scans missing in those gaps
   /// Scans refused by check_scan_plausibility, in all and per reason (never published).
   std::atomic<uint64_t> implausible_scans{0};
+  std::atomic<uint64_t> multi_layer_scans{0};  ///< layer angle != 0 (an MRS): refused, never interleaved
   std::atomic<uint64_t> implausible_scale{0};
   std::atomic<uint64_t> implausible_offset{0};
   std::atomic<uint64_t> implausible_scan_frequency{0};
@@ -143,7 +147,7 @@ class Lms100Session {
   void stop_streaming_politely();
   void set_state(SessionState state, const std::string& detail);
   bool sleep_interruptible(double seconds);
-  void sync_splitter_counters();
+  void sync_wire_counters();
   void count_rejection(const ScanPlausibility& verdict);
 
   Lms100SessionConfig config_;
@@ -157,9 +161,10 @@ class Lms100Session {
   std::thread thread_;
 
   TcpConnection link_;
-  ColaASplitter splitter_;
+  ColaWire wire_;
   std::vector<uint8_t> receive_buffer_;
   std::string frame_;
+  std::string frame_text_;  ///< frame_ as CoLa-A text (itself on a CoLa-A link)
   LmdScanData scan_data_;
   LaserScan scan_;
   ScanStamper stamper_;

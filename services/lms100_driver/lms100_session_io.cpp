@@ -9,7 +9,6 @@
 #include <fmt/format.h>
 
 #include "common/clock.hpp"
-#include "lms100_driver/cola_a_format.hpp"
 #include "lms100_driver/lmd_scandata_parser.hpp"
 #include "lms100_driver/scan_conversion.hpp"
 
@@ -25,7 +24,12 @@ Lms100Session::Wait Lms100Session::transact(const std::string& request, double t
     why = "stopped";
     return Wait::kStopped;
   }
-  const IoStatus s = link_.send_all(frame_cola_a(request), timeout_s, wake_pipe_[0]);
+  std::string bytes;
+  if (const ParseResult framed = wire_.frame_request(request, bytes); !framed) {
+    why = framed.error;  // a request this dialect has no layout for: a bug, not a link failure
+    return Wait::kClosed;
+  }
+  const IoStatus s = link_.send_all(bytes, timeout_s, wake_pipe_[0]);
   if (s != IoStatus::kOk) {
     if (s == IoStatus::kTimeout) ++counters_.timeouts;
     why = s == IoStatus::kStopped ? "stopped" : "send failed: " + link_.last_error();
@@ -45,8 +49,8 @@ Lms100Session::Wait Lms100Session::pump(const std::string* request, int64_t dead
     // Frames already buffered first: one read can carry a reply and several scans. Every
     // scan of the read reaches the clock filter before any is stamped (scan_stamper.hpp).
     bool got_scan = false;
-    while (splitter_.next(frame_)) {
-      if (is_lmd_scandata(frame_)) {
+    while (wire_.next(frame_)) {
+      if (is_lmd_scandata(frame_)) {  // the same head in both dialects
         if (handle_scan(frame_, last_read_utime_)) {
           got_scan = true;
         } else if (parse_error_streak_ >= config_.max_parse_error_streak) {
@@ -55,19 +59,24 @@ Lms100Session::Wait Lms100Session::pump(const std::string* request, int64_t dead
         }
         continue;
       }
+      if (!wire_.to_text(frame_, frame_text_)) {
+        ++counters_.unexpected_frames;  // a CoLa-B frame shorter than its reply's layout
+        continue;
+      }
+      const std::string& frame = frame_text_;
       uint32_t code = 0;
-      if (request != nullptr && parse_sopas_error(frame_, code)) {
+      if (request != nullptr && parse_sopas_error(frame, code)) {
         ++counters_.sfa_errors;
         why = fmt::format("sensor answered '{}' with sFA {:X} ({})", *request, code, sopas_error_name(code));
         return Wait::kSopasError;
       }
-      if (request != nullptr && is_reply_to(*request, frame_)) {
+      if (request != nullptr && is_reply_to(*request, frame)) {
         ColaAMessage m;
-        if (split_cola_a(frame_, m) && m.type == "sMA") continue;  // acknowledged; the sAN follows
-        reply = frame_;
+        if (split_cola_a(frame, m) && m.type == "sMA") continue;  // acknowledged; the sAN follows
+        reply = frame;
         return Wait::kReply;
       }
-      if (parse_sopas_error(frame_, code)) ++counters_.sfa_errors;
+      if (parse_sopas_error(frame, code)) ++counters_.sfa_errors;
       ++counters_.unexpected_frames;  // a late or duplicated reply (seen on real LMS111s)
     }
     publish_stamped_scans();
@@ -88,8 +97,8 @@ Lms100Session::Wait Lms100Session::pump(const std::string* request, int64_t dead
     switch (s) {
       case IoStatus::kOk:
         last_read_utime_ = now_utime();
-        splitter_.feed(receive_buffer_.data(), received);
-        sync_splitter_counters();
+        wire_.feed(receive_buffer_.data(), received);
+        sync_wire_counters();
         break;
       case IoStatus::kTimeout:
         break;
@@ -105,7 +114,7 @@ Lms100Session::Wait Lms100Session::pump(const std::string* request, int64_t dead
 }
 
 bool Lms100Session::handle_scan(const std::string& payload, int64_t receive_utime) {
-  ParseResult r = parse_lmd_scandata(payload, scan_data_);
+  ParseResult r = wire_.parse_scan(payload, scan_data_);
   if (r) r = to_laser_scan(scan_data_, scan_);
   if (!r) {
     ++counters_.parse_errors;
@@ -113,7 +122,7 @@ bool Lms100Session::handle_scan(const std::string& payload, int64_t receive_utim
     return false;
   }
   parse_error_streak_ = 0;
-  const ScanPlausibility plausible = check_scan_plausibility(scan_data_);
+  const ScanPlausibility plausible = check_scan_plausibility(scan_data_, config_.device);
   counters_.reserved_distance_codes += count_reserved_distance_codes(scan_data_);
   if (have_last_scan_counter_) {
     const uint32_t missing = (scan_data_.scan_counter - last_scan_counter_ - 1) & 0xFFFFu;
@@ -129,6 +138,8 @@ bool Lms100Session::handle_scan(const std::string& payload, int64_t receive_utim
     return true;
   }
 
+  scan_.range_min = config_.device.range_min_m;
+  scan_.range_max = config_.device.range_max_m;
   stamper_.add(scan_, scan_data_.time_since_startup_us, scan_data_.time_of_transmission_us, receive_utime);
   return true;
 }
@@ -154,6 +165,9 @@ void Lms100Session::count_rejection(const ScanPlausibility& verdict) {
   switch (verdict.reason) {
     case ScanImplausibility::kNone:
       return;
+    case ScanImplausibility::kLayerAngle:
+      ++counters_.multi_layer_scans;
+      break;
     case ScanImplausibility::kScale:
       ++counters_.implausible_scale;
       break;
@@ -191,10 +205,10 @@ void Lms100Session::stop_streaming_politely() {
   wake_pipe_[0] = saved;
 }
 
-void Lms100Session::sync_splitter_counters() {
-  counters_.garbage_bytes.store(splitter_.garbage_bytes());
-  counters_.resyncs.store(splitter_.resyncs());
-  counters_.oversized_frames.store(splitter_.oversized_frames());
+void Lms100Session::sync_wire_counters() {
+  counters_.garbage_bytes.store(wire_.garbage_bytes());
+  counters_.resyncs.store(wire_.resyncs());
+  counters_.oversized_frames.store(wire_.oversized_frames());
 }
 
 }  // namespace refloc

@@ -1,12 +1,9 @@
-// lms100_driver: a SICK LMS1xx/LMS5xx/TiM over CoLa-A or CoLa-B/TCP → LMS100_SCAN (laser_scan_t),
-// with reconnects forever, implausible scans refused, and the link's counters in HEARTBEAT. The session blocks in poll() on its own thread and queues each scan; the ServiceRuntime loop
-// publishes them (so HEARTBEAT's messages_out counts them) and copies LinkHealth's verdict and
-// the counters into the heartbeat.
+// lms100_driver: a SICK LMS1xx/LMS5xx/TiM over CoLa-A or CoLa-B/TCP -> LMS100_SCAN, reconnecting forever.
+// The session thread queues scans; the ServiceRuntime loop publishes them (HEARTBEAT counts them).
 
 #include <CLI/CLI.hpp>
 #include <refloc/heartbeat_t.hpp>
 #include <string>
-
 #include "common/clock.hpp"
 #include "common/lcm_conversions.hpp"
 #include "common/service_command_line.hpp"
@@ -38,7 +35,8 @@ void log_state(SessionState state, const std::string& detail) {
   spdlog::info("{}: {}", to_string(state), detail);
 }
 
-void publish_queued(ServiceRuntime& runtime, ScanHandoff& handoff, LinkHealth& health, const std::string& channel) {
+void publish_queued(ServiceRuntime& runtime, ScanHandoff& handoff, LinkHealth& health,
+                    const std::string& channel) {
   handoff.drain([&](const LaserScan& scan) {
     const int64_t t0 = monotonic_us();
     const bool published = runtime.publish(channel, to_lcm(scan));
@@ -74,7 +72,8 @@ int run(const Options& options) {
     if (const auto line = health.on_scan_rejected(monotonic_us(), refused.detail); !line.empty())
       spdlog::warn("{}", line);
   });
-  runtime.add_periodic(kPublishPeriodS, [&] { publish_queued(runtime, handoff, health, config.output_channel); });
+  runtime.add_periodic(kPublishPeriodS,
+                       [&] { publish_queued(runtime, handoff, health, config.output_channel); });
   runtime.add_periodic(0.25, [&] { report_link(runtime, session, health, handoff); });
   session.start_thread();
   const int rc = runtime.run();
@@ -87,7 +86,8 @@ int run(const Options& options) {
 
 int main(int argc, char** argv) {
   // No default config file: the built-in defaults are an LMS100's factory settings.
-  refloc::ServiceCommandLine cli("lms100_driver", "SICK laser scanner driver: CoLa-A/B over TCP -> LMS100_SCAN", "");
+  refloc::ServiceCommandLine cli("lms100_driver",
+                                 "SICK laser scanner driver: CoLa-A/B over TCP -> LMS100_SCAN", "");
   refloc::Options o;
   cli.app.add_option("--host", o.host, "sensor address; overrides /host of the config (default 192.168.0.1)");
   cli.app.add_option("--port", o.port, "sensor TCP port; overrides /port (default 2111 CoLa-A, 2112 CoLa-B)")

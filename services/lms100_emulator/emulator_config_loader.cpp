@@ -17,7 +17,8 @@ WriteSplitMode parse_split_mode(const std::string& name) {
 Lms100EmulatorConfig parse_emulator_config(const JsonConfig& c) {
   Lms100EmulatorConfig out;
   out.bind_address = c.string("/bind_address", out.bind_address);
-  out.port = static_cast<uint16_t>(c.integer("/port", out.port, 0, 65535));
+  out.cola_b = c.choice("/protocol", "cola_a", {"cola_a", "cola_b"}) == "cola_b";
+  out.port = static_cast<uint16_t>(c.integer("/port", out.cola_b ? 2112 : 2111, 0, 65535));
 
   Lms100DeviceConfig& d = out.device;
   const double frequency_hz = c.number("/scan_frequency_hz", d.scan_frequency_1e2hz / 100.0, 25.0, 50.0);

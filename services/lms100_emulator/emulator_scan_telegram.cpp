@@ -60,8 +60,12 @@ void Lms100Emulator::Server::emit_scan(const ScanSlot& slot, bool stream) {
   LmdBeamLayout layout;
   layout.start_angle_1e4deg = beams.start_angle_1e4deg;
   layout.step_1e4deg = beams.step_1e4deg;
-  encode_lmd_scandata(header, layout, dist_mm.data(), rssi.data(), dist_mm.size(), options, body);
-  corrupt_scan_header(settings, body);  // the implausible-header faults; no-op by default
+  if (config.cola_b) {  // the header faults rewrite CoLa-A text: CoLa-A only
+    encode_lmd_scandata_cola_b(header, layout, dist_mm.data(), rssi.data(), dist_mm.size(), options, body);
+  } else {
+    encode_lmd_scandata(header, layout, dist_mm.data(), rssi.data(), dist_mm.size(), options, body);
+    corrupt_scan_header(settings, body);  // the implausible-header faults; no-op by default
+  }
 
   telegram_counter = static_cast<uint16_t>(telegram_counter + 1);
   if (stream) {

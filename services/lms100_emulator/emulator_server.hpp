@@ -6,6 +6,7 @@
 #include "common/angles.hpp"
 #include "common/clock.hpp"
 #include "lms100_emulator/cola_a_request_reader.hpp"
+#include "lms100_emulator/cola_b_wire.hpp"
 #include "lms100_emulator/lms100_emulator.hpp"
 
 #include <atomic>
@@ -54,6 +55,7 @@ struct Lms100Emulator::Server {
 
   Lms100Device device;
   ColaARequestReader request_reader;
+  ColaBRequestReader request_reader_b;  ///< config.cola_b
   int listen_fd = -1;
   int client_fd = -1;
   int64_t power_up_mono_us = 0;
@@ -66,7 +68,7 @@ struct Lms100Emulator::Server {
   int64_t stalled_until_mono = 0;
   int merged_count = 0;
 
-  std::string request, reply, body, framed, merge_buffer, stall_buffer;
+  std::string request, reply, body, framed, merge_buffer, stall_buffer, binary;
   std::vector<uint16_t> dist_mm, rssi;
   std::vector<size_t> cuts;
 

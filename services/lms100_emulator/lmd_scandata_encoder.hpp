@@ -60,4 +60,10 @@ void encode_lmd_scandata(const LmdTelegramHeader& header, const LmdBeamLayout& l
                          const uint16_t* dist_mm, const uint16_t* rssi, size_t num_beams,
                          const LmdOutputOptions& options, std::string& out);
 
+/// The same telegram as a CoLa-B payload (no framing): the head "sSN LMDscandata " and every
+/// field big-endian at its fixed width (§3; laid out as in the recorded LMS111/LMS511 sessions).
+void encode_lmd_scandata_cola_b(const LmdTelegramHeader& header, const LmdBeamLayout& layout,
+                                const uint16_t* dist_mm, const uint16_t* rssi, size_t num_beams,
+                                const LmdOutputOptions& options, std::string& out);
+
 }  // namespace refloc

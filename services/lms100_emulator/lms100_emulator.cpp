@@ -90,6 +90,7 @@ void Lms100Emulator::Server::accept_new_client() {
   client_fd = fd;
   configure_client_socket(client_fd, config.send_timeout_ms);
   request_reader.reset();
+  request_reader_b.reset();
   std::lock_guard<std::mutex> lock(stats_mutex);
   ++stats.clients_accepted;
 }
@@ -114,8 +115,17 @@ void Lms100Emulator::Server::read_client() {
     return;
   }
   if (n < 0) return;
-  request_reader.feed(buffer, static_cast<size_t>(n));
-  while (client_fd >= 0 && request_reader.next(request)) handle_request(request);
+  if (!config.cola_b) {
+    request_reader.feed(buffer, static_cast<size_t>(n));
+    while (client_fd >= 0 && request_reader.next(request)) handle_request(request);
+    return;
+  }
+  request_reader_b.feed(buffer, static_cast<size_t>(n));
+  while (client_fd >= 0 && request_reader_b.next(binary)) {
+    // A request whose arguments do not fit its layout reaches the device as non-text: sFA.
+    if (!cola_b_request_to_text(binary, request)) request = binary;
+    handle_request(request);
+  }
 }
 
 void Lms100Emulator::Server::handle_request(const std::string& payload) {
@@ -137,6 +147,10 @@ void Lms100Emulator::Server::handle_request(const std::string& payload) {
     emit_scan(slot, false);
     return;
   }
+  if (config.cola_b) {
+    cola_b_reply_from_text(reply, binary);
+    reply.swap(binary);
+  }
   send_frame(reply, false);
   if (settings.duplicate_replies && client_fd >= 0) send_frame(reply, false);
 }
@@ -147,9 +161,13 @@ void Lms100Emulator::Server::send_frame(const std::string& payload, bool is_scan
   if (settings.junk_bytes_between_telegrams > 0) {
     append_junk_bytes(static_cast<size_t>(settings.junk_bytes_between_telegrams), rng, framed);
   }
-  framed.push_back(cola::kStx);
-  framed.append(payload);
-  framed.push_back(cola::kEtx);
+  if (config.cola_b) {
+    frame_cola_b_telegram(payload, framed);
+  } else {
+    framed.push_back(cola::kStx);
+    framed.append(payload);
+    framed.push_back(cola::kEtx);
+  }
 
   if (is_scan && faults.take_reset_mid_telegram()) {
     flush_merged();

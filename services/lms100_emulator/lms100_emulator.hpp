@@ -1,5 +1,5 @@
 #pragma once
-// An LMS100 on TCP: CoLa-A requests in, replies and the scan stream out, on a
+// An LMS100 on TCP: CoLa-A (or CoLa-B) requests in, replies and the scan stream out, on a
 // real-time, drift-free scan schedule, with fault injection. One client at a time
 // (a new connection replaces the old one, as the device's single host port does).
 // The server runs in its own thread between start() and stop().
@@ -19,6 +19,7 @@ namespace refloc {
 struct Lms100EmulatorConfig {
   std::string bind_address = "127.0.0.1";
   uint16_t port = 2111;  ///< 0 = ephemeral (tests); see Lms100Emulator::port()
+  bool cola_b = false;   ///< speak CoLa-B (binary, SICK's port 2112) instead of CoLa-A
   Lms100DeviceConfig device;
   double processing_delay_s = 0.001;    ///< last beam to telegram ready [s]
   uint32_t power_up_clock_us = 0;       ///< device clock at power-up [us]; near 2^32 tests the wrap

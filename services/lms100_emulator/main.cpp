@@ -1,14 +1,13 @@
-// lms100_emulator: a SICK LMS100 on TCP (CoLa-A on 2111 or CoLa-B on 2112) for tests and demos, rendering a
-// world from a static pose (--world, --pose) or a test pattern; faults from flags, the config
-// and stdin commands (--control-stdin, fault_command.hpp); HEARTBEAT with its counters over LCM.
+// lms100_emulator: a SICK LMS100 on TCP (CoLa-A 2111 or CoLa-B 2112) for tests and demos, rendering a world
+// from a pose (--world, --pose) or a test pattern; faults from flags, the config and stdin commands
+// (--control-stdin, fault_command.hpp); HEARTBEAT with its counters over LCM.
 
 #include <signal.h>
 #include <unistd.h>
 #include <CLI/CLI.hpp>
-#include <refloc/heartbeat_t.hpp>
-
 #include <memory>
 #include <optional>
+#include <refloc/heartbeat_t.hpp>
 #include <string>
 
 #include "common/service_command_line.hpp"
@@ -72,16 +71,14 @@ int main(int argc, char** argv) {
       "SICK LMS100 emulator: CoLa-A or CoLa-B over TCP, test pattern or rendered world, fault injection", "");
   cli.app.get_option("--config")
       ->description(
-          "emulator config (JSON; keys in emulator_config_loader.hpp, plus "
-          "world_file, map_T_laser \"x,y,theta\", render {...})");
+          "emulator config (keys in emulator_config_loader.hpp, world_file, map_T_laser, render {...})");
   refloc::EmulatorOverrides o;
   bool control_stdin = false, no_lcm = false;
   CLI::App& app = cli.app;
   app.add_option("--bind", o.bind_address, "address to listen on (default 127.0.0.1)");
-  app.add_option("--protocol", o.protocol, "cola_a (default) or cola_b (binary)")
+  app.add_option("--protocol", o.protocol, "cola_a (default) or cola_b")
       ->check(CLI::IsMember({"cola_a", "cola_b"}));
-  app.add_option("--port", o.port, "TCP port (default 2111 CoLa-A, 2112 CoLa-B; 0 = any free port)")
-      ->check(CLI::Range(0, 65535));
+  app.add_option("--port", o.port, "TCP port (2111, CoLa-B 2112; 0 any)")->check(CLI::Range(0, 65535));
   app.add_option("--frequency", o.frequency_hz, "scan frequency [Hz]: 25 or 50 (default 50)");
   app.add_option("--resolution", o.resolution_deg, "angular resolution [deg]: 0.25 or 0.5 (default 0.5)");
   app.add_option("--spin-up-s", o.spin_up_s, "start of measurement to STlms 7 [s] (default 0.2; real ~30)")
@@ -94,10 +91,8 @@ int main(int argc, char** argv) {
   app.add_flag("--duplicate-replies", o.duplicate_replies, "fault: send every command reply twice");
   app.add_flag("--refuse-readiness", o.refuse_readiness, "fault: STlms never reaches 7");
   app.add_flag("--refuse-first-write", o.refuse_first_write, "fault: sFA 4 on the first sWN after power-up");
-  app.add_option("--startup-status-scans", o.startup_status_scans,
-                 "stream telegrams with device status 1 0 after sEN");
-  app.add_flag("--control-stdin", control_stdin,
-               "read fault commands from stdin (drop N, stall MS, close, ...)");
+  app.add_option("--startup-status-scans", o.startup_status_scans, "scans with status 1 0 after sEN");
+  app.add_flag("--control-stdin", control_stdin, "fault commands from stdin (drop N, stall MS, close, ...)");
   app.add_flag("--no-lcm", no_lcm, "no HEARTBEAT (no LCM needed)");
   cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_emulator_config(f); });
   return cli.run(argc, argv,

@@ -17,6 +17,13 @@ namespace {
 
 void apply_overrides(const EmulatorOverrides& o, Lms100EmulatorConfig& config) {
   if (!o.bind_address.empty()) config.bind_address = o.bind_address;
+  if (!o.protocol.empty()) {
+    const bool cola_b = o.protocol == "cola_b";
+    // The port follows the protocol's convention (2111 / 2112) unless it was chosen.
+    if (cola_b != config.cola_b && config.port == (config.cola_b ? 2112 : 2111))
+      config.port = cola_b ? 2112 : 2111;
+    config.cola_b = cola_b;
+  }
   if (o.port >= 0) config.port = static_cast<uint16_t>(o.port);
   if (o.frequency_hz > 0)
     config.device.scan_frequency_1e2hz = static_cast<uint32_t>(o.frequency_hz * 100.0 + 0.5);
@@ -96,8 +103,9 @@ std::string describe_scan_source(const StandaloneSetup& setup) {
 
 std::string describe_device(const StandaloneSetup& setup, uint16_t port) {
   const Lms100DeviceConfig& device = setup.emulator.device;
-  return fmt::format("LMS100 emulator on {}:{} ({} Hz, {} deg, spin-up {} s)", setup.emulator.bind_address,
-                     port, device.scan_frequency_1e2hz / 100.0, device.angular_resolution_1e4deg / 1e4,
+  return fmt::format("LMS100 emulator on {}:{} ({}, {} Hz, {} deg, spin-up {} s)",
+                     setup.emulator.bind_address, port, setup.emulator.cola_b ? "CoLa-B" : "CoLa-A",
+                     device.scan_frequency_1e2hz / 100.0, device.angular_resolution_1e4deg / 1e4,
                      device.spin_up_s);
 }
 

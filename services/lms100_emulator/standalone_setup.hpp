@@ -19,6 +19,7 @@ namespace refloc {
 struct EmulatorOverrides {
   std::string bind_address;
   int port = -1;
+  std::string protocol;       ///< "" (the file's), cola_a or cola_b
   double frequency_hz = 0;    ///< 25 or 50 [Hz]
   double resolution_deg = 0;  ///< 0.25 or 0.5 [deg]
   double spin_up_s = -1;      ///< [s]

@@ -31,6 +31,32 @@ TEST(DriverConfigFile, QuarterDegreeAt25HzAnd8BitRssi) {
   EXPECT_NEAR(c.session.scan_period_s(), 0.04, 1e-12);
 }
 
+TEST(DriverConfigFile, SensorAddressPortAndProtocolAreKeys) {
+  const DriverServiceConfig a = parse("{}");
+  EXPECT_EQ(a.session.host, "192.168.0.1");
+  EXPECT_EQ(a.session.port, 2111);
+  EXPECT_EQ(a.session.dialect, ColaDialect::kColaA);
+  const DriverServiceConfig b = parse(R"({"host": "10.0.0.7", "protocol": "cola_b"})");
+  EXPECT_EQ(b.session.host, "10.0.0.7");
+  EXPECT_EQ(b.session.port, 2112);  // CoLa-B's port by convention
+  EXPECT_EQ(b.session.dialect, ColaDialect::kColaB);
+  EXPECT_EQ(parse(R"({"protocol": "cola_b", "port": 2111})").session.port, 2111);
+}
+
+TEST(DriverConfigFile, DeviceProfileSetsLimitsAndDefaults) {
+  const DriverServiceConfig lms1xx = parse("{}");
+  EXPECT_EQ(lms1xx.session.device.name, "lms1xx");
+  EXPECT_TRUE(lms1xx.session.set_scan_config);
+  const DriverServiceConfig lms5xx = parse(R"({"device": "lms5xx"})");
+  EXPECT_DOUBLE_EQ(lms5xx.session.device.range_max_m, 80.0);
+  EXPECT_EQ(lms5xx.session.scan.frequency_1e2hz, 2500u);
+  EXPECT_FALSE(lms5xx.session.set_scan_config);  // the LMS1xx's mLMPsetscancfg does not fit it
+  EXPECT_FALSE(lms5xx.session.output.rssi_16bit);
+  const DriverServiceConfig tim = parse(R"({"device": "tim5xx_7xx"})");
+  EXPECT_EQ(tim.session.scan.frequency_1e2hz, 1500u);
+  EXPECT_NEAR(tim.session.scan_period_s(), 1.0 / 15.0, 1e-12);
+}
+
 TEST(DriverConfigFile, BadValuesNameTheKey) {
   const auto message = [](const std::string& text) {
     try {
@@ -45,6 +71,15 @@ TEST(DriverConfigFile, BadValuesNameTheKey) {
   EXPECT_NE(message(R"({"rssi_bits": 12})").find("/rssi_bits"), std::string::npos);
   EXPECT_NE(message(R"({"reply_timeout_s": -1})").find("/reply_timeout_s"), std::string::npos);
   EXPECT_NE(message(R"({"rssi_bit": 8})").find("/rssi_bit"), std::string::npos);
+  EXPECT_NE(message(R"({"protocol": "cola_c"})").find("/protocol"), std::string::npos);
+  EXPECT_NE(message(R"({"port": 0})").find("/port"), std::string::npos);
+  EXPECT_NE(message(R"({"host": ""})").find("/host"), std::string::npos);
+  EXPECT_NE(message(R"({"device": "lms100"})").find("/device: expected one of lms1xx, lms5xx"),
+            std::string::npos);
+  EXPECT_NE(message(R"({"device": "lms5xx", "set_scan_config": true})").find("/set_scan_config"),
+            std::string::npos);
+  EXPECT_NE(message(R"({"device": "tim5xx_7xx", "frequency_hz": 50})").find("/frequency_hz"),
+            std::string::npos);
 }
 
 TEST(DriverConfigFile, DeployedFileLoads) {

@@ -61,16 +61,17 @@ TEST(LinkHealth, CountersCarrySessionCountsAndPublishFailuresByName) {
   c.held_scans = 4;
   c.held_scan_max_delay_us = 81'000;
   const auto counters = link_counters(c, 2);
-  ASSERT_EQ(counters.size(), 28u);
+  ASSERT_EQ(counters.size(), 29u);
   EXPECT_STREQ(counters.front().first, "connects");
   std::map<std::string, int64_t> by_name;
   for (const auto& [name, value] : counters) by_name[name] = value;
-  EXPECT_EQ(by_name.size(), 28u);  // no name twice
+  EXPECT_EQ(by_name.size(), 29u);  // no name twice
   EXPECT_EQ(by_name.at("reconnects"), 3);
   EXPECT_EQ(by_name.at("lost_scans"), 7);
   EXPECT_EQ(by_name.at("held_scans"), 4);
   EXPECT_EQ(by_name.at("held_scan_max_delay_us"), 81'000);
   EXPECT_EQ(by_name.at("utime_not_increasing"), 0);
+  EXPECT_EQ(by_name.at("multi_layer_scans"), 0);
   EXPECT_EQ(by_name.at("publish_failures"), 2);
 }
 

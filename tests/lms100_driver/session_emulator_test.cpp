@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -65,6 +66,7 @@ class SessionEmulatorTest : public ::testing::Test {
   void start_emulator(uint16_t port = 0) {
     Lms100EmulatorConfig config;
     config.port = port;
+    config.cola_b = dialect_ == ColaDialect::kColaB;
     config.device.spin_up_s = 0.1;
     emulator_ = std::make_unique<Lms100Emulator>(config, source_.make());
     emulator_->start();
@@ -74,6 +76,7 @@ class SessionEmulatorTest : public ::testing::Test {
     Lms100SessionConfig config;
     config.host = "127.0.0.1";
     config.port = port_;
+    config.dialect = dialect_;
     config.scan_timeout_periods = scan_timeout_periods;
     config.reply_timeout_s = 1.0;
     session_ = std::make_unique<Lms100Session>(config, [this](const LaserScan& s) { sink_(s); });
@@ -84,6 +87,7 @@ class SessionEmulatorTest : public ::testing::Test {
     if (emulator_) emulator_->stop();
   }
 
+  ColaDialect dialect_ = ColaDialect::kColaA;  ///< both ends speak it
   RecordingSource source_;
   ScanSink sink_;
   std::unique_ptr<Lms100Emulator> emulator_;
@@ -91,7 +95,19 @@ class SessionEmulatorTest : public ::testing::Test {
   uint16_t port_ = 0;
 };
 
-TEST_F(SessionEmulatorTest, HundredConsecutiveScansEqualWhatTheEmulatorSentValueByValue) {
+/// The same session logic over either dialect: only the framing and the field encoding differ.
+class SessionEmulatorDialectTest : public SessionEmulatorTest, public ::testing::WithParamInterface<ColaDialect> {
+ protected:
+  void SetUp() override { dialect_ = GetParam(); }
+};
+
+INSTANTIATE_TEST_SUITE_P(Dialects, SessionEmulatorDialectTest,
+                         ::testing::Values(ColaDialect::kColaA, ColaDialect::kColaB),
+                         [](const ::testing::TestParamInfo<ColaDialect>& info) {
+                           return std::string(to_string(info.param));
+                         });
+
+TEST_P(SessionEmulatorDialectTest, HundredConsecutiveScansEqualWhatTheEmulatorSentValueByValue) {
   start_emulator();
   start_session();
   ASSERT_TRUE(sink_.wait_for(100, 10s)) << "got " << sink_.count();
@@ -122,6 +138,8 @@ TEST_F(SessionEmulatorTest, HundredConsecutiveScansEqualWhatTheEmulatorSentValue
   EXPECT_EQ(session_->counters().lost_scans.load(), 0u);
   EXPECT_EQ(session_->counters().parse_errors.load(), 0u);
   EXPECT_EQ(session_->counters().connects.load(), 1u);
+  EXPECT_EQ(session_->counters().garbage_bytes.load(), 0u);
+  EXPECT_EQ(session_->counters().unexpected_frames.load(), 0u);
 }
 
 TEST_F(SessionEmulatorTest, FirstBeamTimeIsWithinTwoMillisecondsOfTheEmulatorsBeamTime) {
