@@ -47,10 +47,19 @@ def legible_fix_markers(legend):
             handle.set_alpha(0.9)
 
 
-def plot_mission(args, plt):
+def load_inputs(args):
+    """Every input file, read before matplotlib loads: a bad file fails fast."""
+    world = load_world(args.world, args.map)
+    if args.command == "mission":
+        return {"trace": load_trace(args.trace), "world": world}
+    return {"rows": load_eval_csv(args.csv), "world": world,
+            "reference": load_reference_csv(args.reference) if args.reference else []}
+
+
+def plot_mission(args, inputs, plt):
     from refloc_plot_draw import (LASER_COLOUR, POSE_COLOUR, TRUTH_COLOUR, WAYPOINT_COLOUR, add_scale_bar, draw_map,
                                   draw_waypoints, rmse, set_map_axes)
-    trace, world = load_trace(args.trace), load_world(args.world, args.map)
+    trace, world = inputs["trace"], inputs["world"]
     truth, pose, laser, wps = (trace[k] for k in ("GROUND_TRUTH", "POSE", "LASER_POSE", "WAYPOINT"))
     fig = plt.figure(figsize=(14, 11), layout="constrained")
     grid = fig.add_gridspec(2, 2, width_ratios=[2.7, 1], height_ratios=[1.75, 1])
@@ -100,6 +109,8 @@ def plot_mission(args, plt):
         arrival = "" if math.isnan(wps["error_mm"][k]) else f", true arrival error {wps['error_mm'][k]:.1f} mm"
         ax_zoom.set_title(f"zoom ±{half_mm:g} mm around WP{k + 1}\n{arrival.lstrip(', ')}", fontsize=10)
         add_scale_bar(ax_zoom, 2 * half_mm, metres_per_unit=0.001)
+    else:
+        ax_zoom.axis("off")
 
     pose_rmse, laser_rmse = rmse(pose["error_mm"]), rmse(laser["error_mm"])
     ax_err.scatter(laser["t_s"], laser["error_mm"], s=5, color=LASER_COLOUR, alpha=0.5, lw=0, zorder=3,
@@ -126,11 +137,10 @@ def plot_mission(args, plt):
     return fig
 
 
-def plot_eval(args, plt):
+def plot_eval(args, inputs, plt):
     from matplotlib.ticker import MaxNLocator
     from refloc_plot_draw import POSE_COLOUR, LASER_COLOUR, add_scale_bar, draw_map, percentile, rmse, set_map_axes
-    rows, world = load_eval_csv(args.csv), load_world(args.world, args.map)
-    reference = load_reference_csv(args.reference) if args.reference else []
+    rows, world, reference = inputs["rows"], inputs["world"], inputs["reference"]
     colours = {"default": POSE_COLOUR, "paper": LASER_COLOUR}
     good = {m: [r for r in rows if r["mode"] == m and r["published_ok"] == 1 and r["wrong"] == 0] for m in colours}
     fig = plt.figure(figsize=(13, 10), layout="constrained")
@@ -228,15 +238,21 @@ def main(argv):
     for out in outputs:
         if os.path.splitext(out)[1].lower() not in (".png", ".svg", ".pdf"):
             parser.error(f"--out {out}: the extension must be .png, .svg or .pdf")
-    import matplotlib
-    matplotlib.use("Agg")
-    matplotlib.rcParams["svg.fonttype"] = "none"  # SVG text stays text (searchable, smaller)
-    import matplotlib.pyplot as plt
     try:
-        fig = plot_mission(args, plt) if args.command == "mission" else plot_eval(args, plt)
+        inputs = load_inputs(args)
     except DataError as e:
         print(f"refloc-plot: {e}", file=sys.stderr)
         return EXIT_DATA
+    try:
+        import matplotlib
+    except ImportError:
+        print("refloc-plot: matplotlib missing: apt-get install python3-matplotlib (deploy/install-deps.sh)",
+              file=sys.stderr)
+        return EXIT_FAILURE
+    matplotlib.use("Agg")
+    matplotlib.rcParams["svg.fonttype"] = "none"  # SVG text stays text (searchable, smaller)
+    import matplotlib.pyplot as plt
+    fig = plot_mission(args, inputs, plt) if args.command == "mission" else plot_eval(args, inputs, plt)
     for out in outputs:
         try:
             fig.savefig(out, dpi=110)
