@@ -2,7 +2,8 @@
 // private network namespace (run_in_netns.sh); longer than 300 lines because every case shares
 // its process and LCM helpers. LMS100_SCAN at 50 Hz, counters and state in HEARTBEAT, recovery
 // when the emulator is killed and restarted, a driver SIGSTOPped past its scan timeout keeping its
-// connection, implausible headers refused (counted, DEGRADED with the reason, recovery), exit codes.
+// connection, implausible headers refused (counted, DEGRADED with the reason, recovery), CoLa-B from
+// the config with messages_out counting the scans, exit codes.
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <refloc/heartbeat_t.hpp>
 #include <refloc/laser_scan_t.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -37,12 +39,16 @@ struct Collector {
   std::vector<heartbeat_t> driver_heartbeats;
   std::vector<laser_scan_t> scans;
   std::vector<Clock::time_point> scan_times;
+  std::vector<int64_t> receive_to_arrival_us;  ///< driver's read of the telegram -> here [us]
   void on_heartbeat(const lcm::ReceiveBuffer*, const std::string&, const heartbeat_t* m) {
     if (m->service == "lms100_driver") driver_heartbeats.push_back(*m);
   }
   void on_scan(const lcm::ReceiveBuffer*, const std::string&, const laser_scan_t* m) {
     scans.push_back(*m);
     scan_times.push_back(Clock::now());
+    const auto now_us = std::chrono::duration_cast<std::chrono::microseconds>(
+        std::chrono::system_clock::now().time_since_epoch());
+    receive_to_arrival_us.push_back(now_us.count() - m->receive_utime);
   }
 };
 
@@ -299,6 +305,46 @@ TEST(Lms100DriverProcess, RefusesImplausibleHeadersCountsThemSaysWhyAndRecovers)
   EXPECT_TRUE(spin_until(lcm, 3s, [&] {
     return ok_again() && counter(c.driver_heartbeats.back(), "reserved_distance_codes") >= 14;
   }));
+  EXPECT_EQ(driver.stop(), 0);
+}
+
+// CoLa-B chosen by the config file alone (protocol, host; port 2112 by convention), and HEARTBEAT's
+// messages_out counting the scans the driver publishes (refloc-status showed 0.0 msg/s, issue 13).
+TEST(Lms100DriverProcess, OverColaBFromTheConfigItsHeartbeatCountsEveryPublishedScan) {
+  lcm::LCM lcm(kUrl);
+  ASSERT_TRUE(lcm.good());
+  Collector c;
+  lcm.subscribe("HEARTBEAT", &Collector::on_heartbeat, &c);
+  lcm.subscribe("LMS100_SCAN", &Collector::on_scan, &c);
+  const std::string config =
+      write_config("lms100_driver_cola_b.json", R"({"host": "127.0.0.1", "protocol": "cola_b"})");
+  testing::ChildProcess emulator(
+      {kBin + "lms100_emulator", "--protocol", "cola_b", "--spin-up-s", "0.1", "--no-lcm"},
+      kLogDir + "lms100_driver_cola_b_emulator.log");
+  testing::ChildProcess driver({kBin + "lms100_driver", "--config", config, "--lcm-url", kUrl},
+                               kLogDir + "lms100_driver_cola_b_driver.log");
+  ASSERT_TRUE(spin_until(lcm, 5s, [&] { return c.scans.size() >= 50; })) << c.scans.size() << " scans";
+  EXPECT_EQ(c.scans.back().nranges, 541);
+  const size_t streaming_heartbeats = c.driver_heartbeats.size();
+  ASSERT_TRUE(spin_until(lcm, 4s, [&] { return c.driver_heartbeats.size() >= streaming_heartbeats + 3; }));
+  const heartbeat_t& first = c.driver_heartbeats[streaming_heartbeats];
+  const heartbeat_t& last = c.driver_heartbeats.back();
+  const double rate_hz =
+      static_cast<double>(last.messages_out - first.messages_out) / ((last.utime - first.utime) * 1e-6);
+  std::printf("HEARTBEAT messages_out rate over CoLa-B: %.1f msg/s; scans counter %lld, messages_out %lld\n",
+              rate_hz, static_cast<long long>(counter(last, "scans")),
+              static_cast<long long>(last.messages_out));
+  EXPECT_NEAR(rate_hz, 50.0, 5.0);
+  // "scans" is copied every 0.25 s, messages_out read when the heartbeat goes out.
+  EXPECT_NEAR(static_cast<double>(last.messages_out), static_cast<double>(counter(last, "scans")), 15.0);
+  std::vector<int64_t> delays(c.receive_to_arrival_us.begin() + 10, c.receive_to_arrival_us.end());
+  std::sort(delays.begin(), delays.end());
+  std::printf("telegram read -> LMS100_SCAN received: median %lld us, max %lld us over %zu scans\n",
+              static_cast<long long>(delays[delays.size() / 2]), static_cast<long long>(delays.back()),
+              delays.size());
+  EXPECT_EQ(last.state, heartbeat_t::STATE_OK);
+  EXPECT_EQ(counter(last, "parse_errors"), 0);
+  EXPECT_EQ(counter(last, "publish_queue_dropped"), 0);
   EXPECT_EQ(driver.stop(), 0);
 }
 
