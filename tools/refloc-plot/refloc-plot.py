@@ -88,7 +88,7 @@ def plot_mission(args, inputs, plt):
                                       frameon=False))
     ax_map.set_title("path over the map; the zoom (right) shows the millimetres", fontsize=10)
 
-    k = min(max(args.zoom_waypoint, 1), len(wps["x_m"])) - 1 if wps["x_m"] else -1
+    k = min(max(args.zoom_waypoint, 0), len(wps["x_m"]) - 1) if wps["x_m"] else -1
     if k >= 0:
         cx, cy, half_mm = wps["x_m"][k], wps["y_m"][k], args.zoom_mm
         traces(ax_zoom, lambda v: [(x - cx) * 1000 for x in v], lambda v: [(y - cy) * 1000 for y in v], 14.0)
@@ -107,7 +107,7 @@ def plot_mission(args, inputs, plt):
         ax_zoom.set_xlabel(f"x − {cx:g} m [mm]")
         ax_zoom.set_ylabel(f"y − {cy:g} m [mm]")
         arrival = "" if math.isnan(wps["error_mm"][k]) else f", true arrival error {wps['error_mm'][k]:.1f} mm"
-        ax_zoom.set_title(f"zoom ±{half_mm:g} mm around WP{k + 1}\n{arrival.lstrip(', ')}", fontsize=10)
+        ax_zoom.set_title(f"zoom ±{half_mm:g} mm around WP{k}\n{arrival.lstrip(', ')}", fontsize=10)
         add_scale_bar(ax_zoom, 2 * half_mm, metres_per_unit=0.001)
     else:
         ax_zoom.axis("off")
@@ -123,7 +123,7 @@ def plot_mission(args, inputs, plt):
         ax_err.axvline(t, color=WAYPOINT_COLOUR, lw=0.9, ls="--", zorder=2,
                        label="waypoint arrival (true error)" if n == 0 else None)
         ax_err.plot([t], [e], marker="D", color=WAYPOINT_COLOUR, ms=5, zorder=5)
-        ax_err.annotate(f"WP{i + 1}\n{e:.1f} mm", (t, top), xytext=(3, -3), textcoords="offset points", va="top",
+        ax_err.annotate(f"WP{i}\n{e:.1f} mm", (t, top), xytext=(3, -3), textcoords="offset points", va="top",
                         fontsize=8, color=WAYPOINT_COLOUR)
     clipped = sum(1 for s in (pose["error_mm"], laser["error_mm"]) for v in s if v > top)
     ax_err.set_ylim(0, top)
@@ -132,8 +132,8 @@ def plot_mission(args, inputs, plt):
     ax_err.set_ylabel("position error vs ground truth [mm]")
     ax_err.grid(True, lw=0.4, color="#cccccc")
     legible_fix_markers(ax_err.legend(loc="upper left", bbox_to_anchor=(0.0, 0.86), fontsize=8, framealpha=0.9))
-    ax_err.set_title("position error over time" + (f" ({clipped} points above {top:.0f} mm not shown)"
-                                                   if clipped else ""), fontsize=10)
+    hidden = f" ({clipped} point{'s' if clipped > 1 else ''} above {top:.0f} mm not shown)" if clipped else ""
+    ax_err.set_title("position error over time" + hidden, fontsize=10)
     return fig
 
 
@@ -219,7 +219,8 @@ def main(argv):
     sub = parser.add_subparsers(dest="command", required=True, parser_class=Parser)
     mission = sub.add_parser("mission", help="a mission's path and errors (refloc-mission --trace CSV)")
     mission.add_argument("--trace", required=True, help="refloc-mission's trace CSV")
-    mission.add_argument("--zoom-waypoint", type=int, default=1, help="waypoint (1-based) the zoom is centred on")
+    mission.add_argument("--zoom-waypoint", type=int, default=0,
+                         help="waypoint the zoom is centred on (0-based, as refloc-mission counts them)")
     mission.add_argument("--zoom-mm", type=float, default=40.0, help="half width of the zoom [mm]")
     evaluation = sub.add_parser("eval", help="refloc-eval paper-table / random (its CSV)")
     evaluation.add_argument("--csv", required=True, help="refloc-eval's measurement CSV")

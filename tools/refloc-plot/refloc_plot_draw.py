@@ -71,14 +71,15 @@ def set_map_axes(ax, xs, ys, margin_m):
 
 
 def draw_waypoints(ax, waypoints, arrow_m, label=True):
-    """Targets as red crosses with their heading as a short arrow and their number (1-based)."""
+    """Targets as red crosses with their heading as a short arrow and their index (0-based, as
+    refloc-mission's "waypoint 0 reached" lines count)."""
     for i, (x, y, theta) in enumerate(zip(waypoints["x_m"], waypoints["y_m"], waypoints["theta_rad"])):
         ax.plot([x], [y], marker="x", color=WAYPOINT_COLOUR, ms=7, mew=1.6, zorder=6,
                 label="waypoints (target, heading)" if i == 0 else None)
         ax.annotate("", xy=(x + arrow_m * math.cos(theta), y + arrow_m * math.sin(theta)), xytext=(x, y),
                     arrowprops={"arrowstyle": "->", "color": WAYPOINT_COLOUR, "lw": 1.0}, zorder=6)
         if label:
-            ax.annotate(f"WP{i + 1}", (x, y), xytext=(5, -11), textcoords="offset points", fontsize=8,
+            ax.annotate(f"WP{i}", (x, y), xytext=(5, -11), textcoords="offset points", fontsize=8,
                         color=WAYPOINT_COLOUR, weight="bold", zorder=6)
 
 

@@ -32,7 +32,7 @@ expect_png "$tmp/path.png"
 # The map panel (metres, walls, reflectors, three traces, waypoints), the zoom in mm and the
 # error panel in mm with arrivals.
 expect_text "$tmp/path.svg" "fixture mission" "x [m] (map frame)" "y [m]" "reflectors (24)" "walls" \
-  "ground truth" "POSE (fused)" "LASER_POSE fixes" "WP1" "WP7" "zoom ±40 mm around WP1" "true arrival error 7.5 mm" \
+  "ground truth" "POSE (fused)" "LASER_POSE fixes" "WP0" "WP6" "zoom ±40 mm around WP0" "true arrival error 7.5 mm" \
   "position error vs ground truth [mm]" "time since the mission started [s]" "waypoint arrival (true error)" "2 m"
 
 "$plot" eval --csv "$data/eval_paper_table.csv" --reference "$data/paper_table1_errors.csv" \
