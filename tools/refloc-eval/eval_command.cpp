@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <fstream>
 
 namespace refloc {
@@ -89,18 +90,19 @@ int run_eval(const std::string& command, EvalOptions o) {
   if (paper_table) j["paper_reported"] = {{"mean_max_err_x_mm", 14.3}, {"mean_max_err_y_mm", 14.7}};
   if (!o.json_file.empty()) std::ofstream(o.json_file) << j.dump(2) << "\n";
   std::ofstream(o.out_prefix + ".csv") << measurements_csv(r.measurements);
-  std::vector<std::string> plot = {"eval",
-                                   "--csv",
-                                   o.out_prefix + ".csv",
-                                   "--world",
-                                   o.world_file,
-                                   "--out",
-                                   o.out_prefix + ".png",
-                                   "--out",
-                                   o.out_prefix + ".svg",
-                                   "--title",
-                                   fmt::format("refloc-eval {} ({} poses x {} scans, world {})", command,
-                                               poses.size(), config.repeats, o.world_file)};
+  std::vector<std::string> plot = {
+      "eval",
+      "--csv",
+      o.out_prefix + ".csv",
+      "--world",
+      o.world_file,
+      "--out",
+      o.out_prefix + ".png",
+      "--out",
+      o.out_prefix + ".svg",
+      "--title",
+      fmt::format("refloc-eval {} ({} poses x {} scans, world {})", command, poses.size(), config.repeats,
+                  std::filesystem::path(o.world_file).filename().string())};
   if (paper_table) {
     std::ofstream(o.out_prefix + ".paper.csv") << paper_reported_errors_csv();
     plot.insert(plot.end(), {"--reference", o.out_prefix + ".paper.csv"});

@@ -156,11 +156,14 @@ def plot_eval(args, inputs, plt):
     if per_pose:
         px, py, pe = zip(*[(x, y, rmse(e)) for x, y, e in per_pose.values()])
         points = ax_map.scatter(px, py, c=pe, s=22, cmap="viridis", zorder=4, label="poses (colour: default-mode RMSE)")
-        fig.colorbar(points, ax=ax_map, shrink=0.7, pad=0.01, label="default mode position RMSE at the pose [mm]")
-    wrong = [r for r in rows if r["wrong"] == 1]
-    if wrong:
-        ax_map.scatter([r["true_x_m"] for r in wrong], [r["true_y_m"] for r in wrong], marker="x", color="red", s=30,
-                       zorder=5, label=f"wrong pose published ({len(wrong)}, both modes)")
+        # Beside the drawn map, not the space an equal-aspect map leaves free.
+        colour_axis = ax_map.inset_axes([1.02, 0.05, 0.025, 0.9])
+        fig.colorbar(points, cax=colour_axis, label="default mode position RMSE at the pose [mm]")
+    for mode, marker in (("paper", "x"), ("default", "+")):
+        wrong = [r for r in rows if r["mode"] == mode and r["wrong"] == 1]
+        if wrong:
+            ax_map.scatter([r["true_x_m"] for r in wrong], [r["true_y_m"] for r in wrong], marker=marker, color="red",
+                           s=34, lw=1.4, zorder=5, label=f"wrong pose published by {mode} mode ({len(wrong)})")
     xs = [p[0] for w in world["walls"] for p in w] + [r["true_x_m"] for r in rows]
     ys = [p[1] for w in world["walls"] for p in w] + [r["true_y_m"] for r in rows]
     set_map_axes(ax_map, xs, ys, margin_m=0.3)
@@ -196,7 +199,7 @@ def plot_eval(args, inputs, plt):
     # The modes side by side at each pose, the bound behind them.
     bound = sorted({(int(r["pose_index"]) + 1, r["crlb_rmse_mm"]) for r in good["default"] if r["crlb_rmse_mm"] > 0})
     if bound:
-        ax_pose.plot(*zip(*bound), color="#555555", lw=0, marker="_", ms=14, mew=2.0, zorder=2,
+        ax_pose.plot(*zip(*bound), color="#555555", lw=0, marker="_", ms=14 if len(bound) <= 50 else 4, mew=2.0, zorder=2,
                      label="Cramér-Rao bound of the LMS100 beam (RMSE at the pose)")
     per_scan = []
     for mode, shift in (("paper", -0.15), ("default", 0.15)):
