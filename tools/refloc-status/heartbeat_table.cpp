@@ -1,27 +1,11 @@
 #include "heartbeat_table.hpp"
 
+#include "common/guarded_main.hpp"
+
 #include <algorithm>
 #include <set>
 
 namespace refloc {
-
-std::string heartbeat_state_name(int8_t state) {
-  // Values of heartbeat_t::STATE_* (lcmtypes/heartbeat_t.lcm); a test checks they agree.
-  switch (state) {
-    case 0:
-      return "STARTING";
-    case 1:
-      return "OK";
-    case 2:
-      return "DEGRADED";
-    case 3:
-      return "ERROR";
-    case 4:
-      return "STOPPING";
-    default:
-      return "STATE_" + std::to_string(static_cast<int>(state));
-  }
-}
 
 HeartbeatTable::HeartbeatTable(double max_age_s, double min_rate_window_s)
     : max_age_s_(max_age_s), min_rate_window_s_(min_rate_window_s) {}
@@ -99,10 +83,19 @@ std::vector<std::string> missing_services(const std::vector<ServiceStatus>& rows
   return names;
 }
 
+std::vector<std::string> services_in_error(const std::vector<ServiceStatus>& rows) {
+  std::vector<std::string> names;
+  for (const auto& r : rows) {
+    if (r.in_error() && !r.duplicate) names.push_back(r.service);
+  }
+  return names;
+}
+
 int status_exit_code(const std::vector<ServiceStatus>& rows) {
   const bool duplicate =
       std::any_of(rows.begin(), rows.end(), [](const ServiceStatus& r) { return r.duplicate; });
-  return missing_services(rows).empty() && !duplicate ? 0 : 1;
+  const bool healthy = missing_services(rows).empty() && services_in_error(rows).empty() && !duplicate;
+  return healthy ? 0 : kExitRuntimeFailure;
 }
 
 }  // namespace refloc

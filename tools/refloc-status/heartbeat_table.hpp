@@ -3,6 +3,8 @@
 // message rates derived from successive heartbeats of the same process, the
 // age of each, and which expected services are missing. No LCM in here.
 
+#include "common/heartbeat_state_name.hpp"
+
 #include <cstdint>
 #include <map>
 #include <string>
@@ -27,9 +29,6 @@ struct HeartbeatSample {
   std::vector<std::pair<std::string, int64_t>> counters;  ///< the service's own fault counters
 };
 
-/// Name of a heartbeat_t::STATE_* value ("OK", "DEGRADED", ...; "STATE_7" if unknown).
-std::string heartbeat_state_name(int8_t state);
-
 /// One line of the status table.
 struct ServiceStatus {
   std::string service;
@@ -45,6 +44,8 @@ struct ServiceStatus {
 
   /// Expected and not alive: never heard, or heard too long ago.
   bool missing() const { return expected && (!seen || stale); }
+  /// Heard recently, saying ERROR (heartbeat_t::STATE_ERROR), expected or not.
+  bool in_error() const { return seen && !stale && last.state == 3; }
   bool has_rates() const { return rate_in_hz >= 0.0; }
 };
 
@@ -82,8 +83,11 @@ class HeartbeatTable {
 /// Names of the expected services that are missing or stale.
 std::vector<std::string> missing_services(const std::vector<ServiceStatus>& rows);
 
-/// Process exit status of refloc-status: 1 when an expected service is missing or stale, or a
-/// service runs twice, else 0.
+/// Names of the services heard saying ERROR (not counting a name that runs twice: that has its own line).
+std::vector<std::string> services_in_error(const std::vector<ServiceStatus>& rows);
+
+/// Process exit status of refloc-status: 1 (kExitRuntimeFailure) when an expected service is
+/// missing or stale, any service is in ERROR, or a service runs twice; else 0.
 int status_exit_code(const std::vector<ServiceStatus>& rows);
 
 }  // namespace refloc

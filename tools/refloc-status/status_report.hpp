@@ -1,26 +1,37 @@
 #pragma once
-// How refloc-status shows the heartbeat table: a fixed-width text table for a
-// terminal, or one JSON document for scripts.
+// One refresh of refloc-status: the table (status_table.hpp) and the pose line for a terminal,
+// or one JSON document for scripts.
 
 #include "heartbeat_table.hpp"
+#include "pose_watch.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace refloc {
 
-/// The text table, one line per service, with a summary line naming missing services.
-std::string format_status_table(const std::vector<ServiceStatus>& rows);
+/// What one refresh shows.
+struct StatusPage {
+  std::vector<ServiceStatus> rows;
+  int64_t heartbeat_decode_errors = 0;  ///< HEARTBEATs refloc-status could not decode
+  std::optional<PoseReport> pose;       ///< the pose line; none: not shown
+};
 
-/// {"ok", "missing": [...], "services": [{...}]}; unknown rates and ages are null.
+struct PageStyle {
+  bool json = false;          ///< one JSON document on one line instead of the table
+  bool clear_screen = false;  ///< live mode: clear the terminal first
+  bool wide = false;          ///< every column, one row per service, no width limit
+};
+
+/// {"ok", "missing": [...], "in_error": [...], "services": [{...}]}; unknown rates and ages are
+/// null; "error_counters" holds a service's non-zero error counters, "counters" every counter.
 nlohmann::json status_to_json(const std::vector<ServiceStatus>& rows);
 
-/// One refresh as printed: the JSON on one line (with "heartbeat_decode_errors"), or the
-/// table (after a clear-screen sequence when clear_screen) and a line about undecodable
-/// HEARTBEATs when there were any.
-std::string format_status(const std::vector<ServiceStatus>& rows, int64_t heartbeat_decode_errors, bool json,
-                          bool clear_screen);
+/// The page as printed: JSON (with "heartbeat_decode_errors" and "pose"), or the table, the pose
+/// line and a line about undecodable HEARTBEATs, within 100 columns unless style.wide.
+std::string format_status(const StatusPage& page, const PageStyle& style);
 
 }  // namespace refloc

@@ -1,6 +1,7 @@
 #include "udp_drop_report.hpp"
 
 #include "status_report.hpp"
+#include "status_table.hpp"
 
 #include <fmt/format.h>
 
@@ -67,16 +68,16 @@ nlohmann::json udp_drops_to_json(const UdpDropReport& report, const std::vector<
   return j;
 }
 
-std::string format_status_with_udp_drops(const std::vector<ServiceStatus>& rows,
-                                         int64_t heartbeat_decode_errors, bool json, bool clear_screen,
+std::string format_status_with_udp_drops(const StatusPage& page, const PageStyle& style,
                                          const UdpDropReport& udp) {
   // Composed from format_status's output rather than inside it, so both stay one concept.
-  if (json) {
-    auto doc = nlohmann::json::parse(format_status(rows, heartbeat_decode_errors, true, false));
-    doc["udp"] = udp_drops_to_json(udp, rows);
+  if (style.json) {
+    auto doc = nlohmann::json::parse(format_status(page, style));
+    doc["udp"] = udp_drops_to_json(udp, page.rows);
     return doc.dump() + "\n";
   }
-  return format_status(rows, heartbeat_decode_errors, false, clear_screen) + format_udp_drops(udp, rows);
+  const std::string drops = format_udp_drops(udp, page.rows);
+  return format_status(page, style) + (style.wide ? drops : wrap_to_width(drops));
 }
 
 }  // namespace refloc

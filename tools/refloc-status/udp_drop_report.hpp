@@ -4,6 +4,7 @@
 // and the namespace's RcvbufErrors total.
 
 #include "heartbeat_table.hpp"
+#include "status_report.hpp"
 #include "udp_drops.hpp"
 
 #include <nlohmann/json.hpp>
@@ -26,8 +27,7 @@ std::string format_udp_drops(const UdpDropReport& report, const std::vector<Serv
 nlohmann::json udp_drops_to_json(const UdpDropReport& report, const std::vector<ServiceStatus>& rows);
 
 /// format_status with the UDP drops: "udp" added to the one JSON document, or the lines after the table.
-std::string format_status_with_udp_drops(const std::vector<ServiceStatus>& rows,
-                                         int64_t heartbeat_decode_errors, bool json, bool clear_screen,
+std::string format_status_with_udp_drops(const StatusPage& page, const PageStyle& style,
                                          const UdpDropReport& udp);
 
 }  // namespace refloc

@@ -124,6 +124,26 @@ TEST(HeartbeatTable, AllExpectedAliveExitsZero) {
   EXPECT_EQ(status_exit_code(table.rows({}, 2.0)), 0);
 }
 
+TEST(HeartbeatTable, AServiceInErrorFailsTheCheckExpectedOrNot) {
+  HeartbeatTable table;
+  HeartbeatSample driver = beat("lms100_driver", 1, 0.0, 0, 0);
+  driver.state = heartbeat_t::STATE_ERROR;
+  table.update(driver, 0.0);
+  HeartbeatSample logger = beat("lcm_logger", 2, 0.0, 0, 0);
+  table.update(logger, 0.0);
+  EXPECT_EQ(services_in_error(table.rows({"lms100_driver"}, 1.0)), std::vector<std::string>{"lms100_driver"});
+  EXPECT_EQ(status_exit_code(table.rows({"lms100_driver"}, 1.0)), 1);
+  logger.state = heartbeat_t::STATE_ERROR;  // not expected, but saying it is broken (full disk)
+  driver.state = heartbeat_t::STATE_OK;
+  table.update(driver, 1.0);
+  table.update(logger, 1.0);
+  EXPECT_EQ(services_in_error(table.rows({"lms100_driver"}, 1.5)), std::vector<std::string>{"lcm_logger"});
+  EXPECT_EQ(status_exit_code(table.rows({"lms100_driver"}, 1.5)), 1);
+  logger.state = heartbeat_t::STATE_DEGRADED;
+  table.update(logger, 2.0);
+  EXPECT_EQ(status_exit_code(table.rows({"lms100_driver"}, 2.5)), 0) << "DEGRADED alone passes";
+}
+
 TEST(HeartbeatStateName, MatchesHeartbeatTypeConstants) {
   EXPECT_EQ(heartbeat_state_name(heartbeat_t::STATE_STARTING), "STARTING");
   EXPECT_EQ(heartbeat_state_name(heartbeat_t::STATE_OK), "OK");

@@ -4,6 +4,7 @@
 #include "service_instances.hpp"
 #include "heartbeat_table.hpp"
 #include "status_report.hpp"
+#include "status_table.hpp"
 
 #include <gtest/gtest.h>
 

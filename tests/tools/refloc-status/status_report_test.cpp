@@ -1,4 +1,5 @@
-// refloc-status output: the text table's columns and the JSON document.
+// refloc-status output: the JSON document and one refresh as printed (the table's layout is
+// status_table_test's).
 
 #include "status_report.hpp"
 
@@ -18,7 +19,7 @@ std::vector<ServiceStatus> sample_rows() {
   s.decode_errors = 3;
   s.processing_p50_us = 812.4;
   s.processing_p99_us = 2210.0;
-  s.counters = {{"resyncs", 0}, {"oversized_clusters", 7}};
+  s.counters = {{"resyncs", 0}, {"oversized_clusters", 7}, {"scans_compensated_odometry", 40}};
   table.update(s, 0.0);
   s.utime += 2'000'000;
   s.messages_in = 50;
@@ -27,27 +28,11 @@ std::vector<ServiceStatus> sample_rows() {
   return table.rows({"reflector_extractor", "pose_solver"}, 2.5);
 }
 
-TEST(StatusReport, TableShowsRatesPercentilesErrorsAgeAndMissing) {
-  const std::string text = format_status_table(sample_rows());
-  EXPECT_NE(text.find("reflector_extractor"), std::string::npos);
-  EXPECT_NE(text.find("4242"), std::string::npos);
-  EXPECT_NE(text.find("DEGRADED"), std::string::npos);
-  EXPECT_NE(text.find(" 25.0 "), std::string::npos);  // 50 in / 2 s
-  EXPECT_NE(text.find(" 24.0 "), std::string::npos);  // 48 out / 2 s
-  EXPECT_NE(text.find(" 812 "), std::string::npos);
-  EXPECT_NE(text.find(" 2210 "), std::string::npos);
-  EXPECT_NE(text.find(" 0.5 "), std::string::npos);  // age
-  EXPECT_NE(text.find("3 oversized_clusters=7"), std::string::npos);
-  EXPECT_EQ(text.find("resyncs"), std::string::npos);  // zero counters are not noise in the table
-  EXPECT_NE(text.find("few clusters"), std::string::npos);
-  EXPECT_NE(text.find("pose_solver"), std::string::npos);
-  EXPECT_NE(text.find("MISSING or stale: pose_solver"), std::string::npos);
-}
-
-TEST(StatusReport, JsonHasNumbersAndNullsForUnknown) {
+TEST(StatusReport, JsonHasNumbersNullsForUnknownAndErrorCountersApart) {
   const auto doc = status_to_json(sample_rows());
   EXPECT_FALSE(doc["ok"].get<bool>());
   EXPECT_EQ(doc["missing"], nlohmann::json::array({"pose_solver"}));
+  EXPECT_EQ(doc["in_error"], nlohmann::json::array());
   const auto& e = doc["services"][0];
   EXPECT_EQ(e["service"], "reflector_extractor");
   EXPECT_EQ(e["state"], "DEGRADED");
@@ -57,39 +42,51 @@ TEST(StatusReport, JsonHasNumbersAndNullsForUnknown) {
   EXPECT_EQ(e["decode_errors"].get<int>(), 3);
   EXPECT_EQ(e["counters"]["oversized_clusters"].get<int>(), 7);
   EXPECT_EQ(e["counters"]["resyncs"].get<int>(), 0);
+  EXPECT_EQ(e["error_counters"], nlohmann::json({{"oversized_clusters", 7}}));
   EXPECT_TRUE(e["present"].get<bool>());
   const auto& m = doc["services"][1];
   EXPECT_EQ(m["state"], "MISSING");
   EXPECT_FALSE(m["present"].get<bool>());
 }
 
-TEST(StatusReport, AllAliveSummaryLine) {
-  HeartbeatTable table;
-  HeartbeatSample s;
-  s.service = "a";
-  table.update(s, 0.0);
-  const std::string text = format_status_table(table.rows({"a"}, 0.5));
-  EXPECT_NE(text.find("all 1 expected services alive"), std::string::npos);
-  EXPECT_NE(text.find(" - "), std::string::npos);  // no rate yet
-}
-
-}  // namespace
-}  // namespace refloc
-
-namespace refloc {
-namespace {
-
 TEST(StatusReport, OneRefreshIsOneJsonLineOrTheTableWithDecodeErrors) {
-  const std::vector<ServiceStatus> rows;
-  const std::string json = format_status(rows, 3, true, true);
+  StatusPage page;
+  page.heartbeat_decode_errors = 3;
+  PageStyle style;
+  style.json = true;
+  const std::string json = format_status(page, style);
   EXPECT_EQ(json.back(), '\n');
   EXPECT_EQ(json.find('\n'), json.size() - 1) << "one line";
   EXPECT_EQ(nlohmann::json::parse(json)["heartbeat_decode_errors"], 3);
-  const std::string text = format_status(rows, 3, false, true);
+  EXPECT_FALSE(nlohmann::json::parse(json).contains("pose")) << "no pose watched, none reported";
+  style.json = false;
+  style.clear_screen = true;
+  const std::string text = format_status(page, style);
   EXPECT_EQ(text.rfind("\033[H\033[2J", 0), 0u) << "live mode clears the screen first";
   EXPECT_NE(text.find("3 HEARTBEAT messages could not be decoded"), std::string::npos) << text;
-  EXPECT_EQ(format_status(rows, 0, false, false).find("could not be decoded"), std::string::npos);
-  EXPECT_EQ(format_status(rows, 0, false, false).rfind("\033", 0), std::string::npos);
+  page.heartbeat_decode_errors = 0;
+  style.clear_screen = false;
+  EXPECT_EQ(format_status(page, style).find("could not be decoded"), std::string::npos);
+  EXPECT_EQ(format_status(page, style).rfind("\033", 0), std::string::npos);
+}
+
+TEST(StatusReport, JsonCarriesThePose) {
+  StatusPage page;
+  PoseReport pose;
+  pose.heard = true;
+  pose.last.x_m = 1.5;
+  pose.last.status = 0;
+  pose.sigma_position_m = 0.003;
+  pose.fixes_ok_per_s = 9.5;
+  page.pose = pose;
+  PageStyle style;
+  style.json = true;
+  const auto doc = nlohmann::json::parse(format_status(page, style));
+  EXPECT_EQ(doc["pose"]["status"], "OK");
+  EXPECT_DOUBLE_EQ(doc["pose"]["x_m"].get<double>(), 1.5);
+  EXPECT_DOUBLE_EQ(doc["pose"]["sigma_position_m"].get<double>(), 0.003);
+  EXPECT_TRUE(doc["pose"]["sigma_theta_rad"].is_null()) << "unusable sigma is null";
+  EXPECT_DOUBLE_EQ(doc["pose"]["fixes_ok_per_s"].get<double>(), 9.5);
 }
 
 }  // namespace

@@ -133,7 +133,9 @@ TEST(UdpDropReport, NoDropsSaysSoAndUnreadableCountersAreNull) {
 TEST(UdpDropReport, JsonStatusIsOneDocumentWithUdp) {
   UdpDropReport report;
   report.protocol = UdpProtocolCounters{1, 0, 0};
-  const std::string out = format_status_with_udp_drops(one_service("navigator", 5), 0, true, false, report);
+  PageStyle json;
+  json.json = true;
+  const std::string out = format_status_with_udp_drops({one_service("navigator", 5), 0, {}}, json, report);
   ASSERT_EQ(out.back(), '\n');
   EXPECT_EQ(out.find('\n'), out.size() - 1);
   const auto doc = nlohmann::json::parse(out);

@@ -1,0 +1,51 @@
+#include "counter_kind.hpp"
+
+#include <array>
+#include <string_view>
+
+namespace refloc {
+namespace {
+
+// Counters of normal operation and gauges (values, not counts), by the services that send
+// them. Listed, not guessed from the name: "lost_scans" and "scans" differ by one word.
+constexpr std::array<std::string_view, 20> kNormalCounters = {
+    // lms100_driver: link and stamping
+    "connects", "scans", "scans_in_bursts", "held_scans", "held_scan_max_delay_us",
+    // lms100_emulator and robot_sim's emulated sensor
+    "clients_accepted", "requests", "scan_telegrams_sent", "laser_clients_accepted", "laser_scans_sent",
+    // reflector_extractor
+    "rssi_scale_8bit", "scans_compensated_odometry", "scans_compensated_fixes",
+    // reflector_matcher
+    "global_relocalizations", "startup_scans_without_prior",
+    // pose_solver: the range bias gauges
+    "range_bias_um", "range_bias_sigma_um",
+    // pose_fusion
+    "fixes_accepted", "initialisations", "fixes_deferred"};
+
+}  // namespace
+
+bool is_error_counter(const std::string& name) {
+  for (const auto normal : kNormalCounters) {
+    if (name == normal) return false;
+  }
+  return true;
+}
+
+SplitCounters split_counters(const NamedCounters& counters) {
+  SplitCounters split;
+  for (const auto& [name, value] : counters) {
+    if (value == 0) continue;
+    (is_error_counter(name) ? split.errors : split.normal).emplace_back(name, value);
+  }
+  return split;
+}
+
+int error_kinds(int64_t decode_errors, const NamedCounters& counters) {
+  int kinds = decode_errors != 0 ? 1 : 0;
+  for (const auto& [name, value] : counters) {
+    if (value != 0 && is_error_counter(name)) ++kinds;
+  }
+  return kinds;
+}
+
+}  // namespace refloc
