@@ -39,4 +39,10 @@ std::string device_profile_names() {
   return names;
 }
 
+std::set<std::string> device_profile_name_set() {
+  std::set<std::string> names;
+  for (const DeviceProfile& p : profiles()) names.insert(p.name);
+  return names;
+}
+
 }  // namespace refloc

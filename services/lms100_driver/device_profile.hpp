@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,5 +33,7 @@ const DeviceProfile* find_device_profile(std::string_view name);
 const DeviceProfile& lms1xx_profile();
 /// "lms1xx, lms5xx, tim5xx_7xx" for messages.
 std::string device_profile_names();
+/// The same names as a set, for JsonConfig::choice.
+std::set<std::string> device_profile_name_set();
 
 }  // namespace refloc

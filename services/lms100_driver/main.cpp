@@ -85,13 +85,13 @@ int run(const Options& options) {
 }  // namespace refloc
 
 int main(int argc, char** argv) {
-  // No default config file: the built-in defaults are an LMS100's factory settings.
   refloc::ServiceCommandLine cli("lms100_driver",
                                  "SICK laser scanner driver: CoLa-A/B over TCP -> LMS100_SCAN", "");
   refloc::Options o;
   cli.app.add_option("--host", o.host, "sensor address; overrides /host of the config (default 192.168.0.1)");
   cli.app.add_option("--port", o.port, "sensor TCP port; overrides /port (default 2111 CoLa-A, 2112 CoLa-B)")
       ->check(CLI::Range(1, 65535));
+  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_driver_config(f); });
   return cli.run(argc, argv, [&] {
     o.config_path = cli.config_path;
     o.lcm_url = cli.lcm_url;

@@ -2,7 +2,7 @@
 // Reads Lms100EmulatorConfig from a JSON config (every key optional, defaults as
 // in the structs, ranges validated, errors name file and JSON pointer).
 //
-//   {"bind_address": "127.0.0.1", "port": 2111,
+//   {"bind_address": "127.0.0.1", "protocol": "cola_a", "port": 2111,
 //    "scan_frequency_hz": 50, "angular_resolution_deg": 0.5, "spin_up_s": 0.2,
 //    "measuring_at_power_up": true, "serial_number": 9260036, "location_name": "not defined",
 //    "firmware_version": "V1.80.2", "rssi_enabled": true, "rssi_16bit": true, "time_info": false,

@@ -67,12 +67,14 @@ StandaloneSetup build_standalone_setup(const std::string& config_path, const Emu
   if (!config_path.empty()) {
     const JsonConfig file = JsonConfig::load_file(config_path);
     setup.emulator = parse_emulator_config(file);
-    const std::string world_in_file = file.string("/world_file", "");
+    const std::string world_in_file =
+        file.string({"/world_file", "", "world to render, relative to this file; none: test pattern"}, "");
     if (setup.world_path.empty() && !world_in_file.empty()) {
       setup.world_path = (std::filesystem::path(config_path).parent_path() / world_in_file).string();
     }
     // Read even when --pose wins, so the key is known to reject_unknown_keys().
-    const std::string pose_in_file = file.string("/map_T_laser", "");
+    const std::string pose_in_file =
+        file.string({"/map_T_laser", "", "static sensor pose in the world as \"x,y,theta\" [m, m, rad]"}, "");
     if (pose_text.empty()) pose_text = pose_in_file;
     if (file.has("/render")) setup.render = sim::parse_scan_render_config(file, "/render");
     file.reject_unknown_keys();

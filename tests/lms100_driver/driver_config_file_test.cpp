@@ -74,8 +74,8 @@ TEST(DriverConfigFile, BadValuesNameTheKey) {
   EXPECT_NE(message(R"({"protocol": "cola_c"})").find("/protocol"), std::string::npos);
   EXPECT_NE(message(R"({"port": 0})").find("/port"), std::string::npos);
   EXPECT_NE(message(R"({"host": ""})").find("/host"), std::string::npos);
-  EXPECT_NE(message(R"({"device": "lms100"})").find("/device: expected one of lms1xx, lms5xx"),
-            std::string::npos);
+  EXPECT_NE(message(R"({"device": "lms100"})").find("/device"), std::string::npos);
+  EXPECT_NE(message(R"({"device": "lms100"})").find("tim5xx_7xx"), std::string::npos);
   EXPECT_NE(message(R"({"device": "lms5xx", "set_scan_config": true})").find("/set_scan_config"),
             std::string::npos);
   EXPECT_NE(message(R"({"device": "tim5xx_7xx", "frequency_hz": 50})").find("/frequency_hz"),

@@ -96,7 +96,8 @@ class SessionEmulatorTest : public ::testing::Test {
 };
 
 /// The same session logic over either dialect: only the framing and the field encoding differ.
-class SessionEmulatorDialectTest : public SessionEmulatorTest, public ::testing::WithParamInterface<ColaDialect> {
+class SessionEmulatorDialectTest : public SessionEmulatorTest,
+                                   public ::testing::WithParamInterface<ColaDialect> {
  protected:
   void SetUp() override { dialect_ = GetParam(); }
 };
