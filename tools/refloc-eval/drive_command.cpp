@@ -3,6 +3,8 @@
 #include "common/reflector_map.hpp"
 #include "common/robot_config.hpp"
 #include "drive_study.hpp"
+#include "eval_plot.hpp"
+#include "path_plot_trace.hpp"
 #include "world_renderer/world_loader.hpp"
 
 #include <fmt/format.h>
@@ -57,6 +59,22 @@ int run_drive_command(const DriveOptions& o) {
   j["sigma_mm"] = o.sigma_mm;
   j["seed"] = o.seed;
   j["fix_velocity_window_s"] = configs.extractor.fix_velocity.window_s;
+  // The picture's data next to the JSON (as paper-table / random write theirs).
+  const bool json_named =
+      o.json_file.size() > 5 && o.json_file.compare(o.json_file.size() - 5, 5, ".json") == 0;
+  const std::string prefix =
+      json_named ? o.json_file.substr(0, o.json_file.size() - 5) : "logs/refloc-eval-drive";
+  std::vector<std::string> plot = {"drive",
+                                   "--world",
+                                   o.world_file,
+                                   "--out",
+                                   prefix + ".png",
+                                   "--out",
+                                   prefix + ".svg",
+                                   "--title",
+                                   fmt::format("refloc-eval drive: {:.0f} s at {:.2f} m/s, heading {}",
+                                               config.duration_s, o.speed_mps, o.heading)};
+  int traces_written = 0;
   for (DriveMotionSource source : sources) {
     const DriveSummary s = run_drive(world, map, robot.robot_T_laser, configs, path, source, config);
     fmt::print(
@@ -68,6 +86,11 @@ int run_drive_command(const DriveOptions& o) {
         s.cross_mean_mm, s.cross_rms_mm, s.position_rmse_mm, s.consistency.position_nees_mean,
         100.0 * s.consistency.position_outside_99, s.consistency.heading_nees_mean);
     j["runs"][to_string(source)] = to_json(s);
+    const std::string trace_file = fmt::format("{}.{}.trace.csv", prefix, to_string(source));
+    if (write_path_trace_csv(trace_file, s.trace)) {
+      plot.insert(plot.end(), {"--trace", fmt::format("{}={}", to_string(source), trace_file)});
+      ++traces_written;
+    }
   }
   fmt::print(
       "(scans: scored scans; odo/fixes/none: the extractor's motion source; along/cross: mean error along / "
@@ -78,6 +101,12 @@ int run_drive_command(const DriveOptions& o) {
     std::ofstream(o.json_file) << j.dump(2) << "\n";
     fmt::print("wrote {}\n", o.json_file);
   }
+  // The numbers are the result; a missing matplotlib or folder costs only the picture.
+  if (traces_written == 0)
+    fmt::print(stderr, "refloc-eval: cannot write {}.*.trace.csv: no picture\n", prefix);
+  else if (run_refloc_plot(plot) != 0)
+    fmt::print(stderr,
+               "refloc-eval: no picture (tools/refloc-plot needs /usr/bin/python3 and python3-matplotlib)\n");
   return 0;
 }
 

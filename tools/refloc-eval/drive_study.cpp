@@ -58,6 +58,7 @@ DriveSummary run_drive(const sim::World& world, const ReflectorMap& map, const P
 
   DriveSummary s;
   s.source = source;
+  s.trace.start_utime = kStartUtime;
   ErrorSums sums;
   ConsistencyAccumulator consistency;
   LaserScan scan;
@@ -85,6 +86,7 @@ DriveSummary run_drive(const sim::World& world, const ReflectorMap& map, const P
         {out.fix->utime, out.fix->map_T_robot, out.fix->covariance, out.fix->status == LaserFixStatus::kOk});
 
     ++s.scans;
+    s.trace.samples.push_back({"GROUND_TRUTH", utime_at(t_scan), path.at(t_scan).map_T_robot, NAN});
     if (t_scan < config.warmup_s) continue;
     ++s.scored_scans;
     const CompensationOutcome c = out.extraction->compensation;
@@ -101,6 +103,7 @@ DriveSummary run_drive(const sim::World& world, const ReflectorMap& map, const P
       continue;
     }
     ++s.ok_fixes;
+    s.trace.samples.push_back({"LASER_POSE", out.fix->utime, out.fix->map_T_robot, error.norm()});
     const Eigen::Vector2d& u = truth.map_direction;
     const double heading_error = angle_diff(out.fix->map_T_robot.theta, truth.map_T_robot.theta);
     sums.add(error.dot(u), error.dot(Eigen::Vector2d(-u.y(), u.x())), heading_error);

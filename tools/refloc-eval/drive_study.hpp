@@ -8,6 +8,7 @@
 #include "drive_path.hpp"
 #include "fix_consistency.hpp"
 #include "localization_pipeline.hpp"
+#include "path_plot_trace.hpp"
 #include "world_renderer/lms100_error_model.hpp"
 #include "world_renderer/world.hpp"
 
@@ -55,6 +56,9 @@ struct DriveSummary {
   double heading_mean_mdeg = 0.0;  ///< estimate - truth [millidegrees]
   double heading_rms_mdeg = 0.0;
   ConsistencySummary consistency;  ///< NEES of the scored OK fixes
+  /// For the picture: the true pose at every scan (GROUND_TRUTH) and the scored OK fixes that
+  /// are not wrong (LASER_POSE, with their error against the truth at their stamp); t = 0 at the start.
+  PathTrace trace;
 };
 
 /// Drive path for config.duration_s through world, one run with source.

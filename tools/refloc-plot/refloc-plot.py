@@ -8,6 +8,9 @@
   refloc-plot.py eval --csv STUDY.csv --world WORLD.json [--reference R.csv] [--out F.png]
       refloc-eval's paper-table / random study: where the poses were, the error scatter (x, y)
       per mode in mm, and the error per pose against the Cramér-Rao bound
+  refloc-plot.py drive --trace SOURCE=F.trace.csv [--trace ...] --world WORLD.json [--out F.png]
+      refloc-eval drive: the true loop and each motion source's fixes over the map, and each
+      source's fix error over time in mm (dots, and a 1 s running mean)
 
 The format follows each --out's extension (.png, .svg, .pdf). Exit codes: 0 written,
 64 usage error, 2 missing or bad input file, 1 anything else."""
@@ -30,35 +33,20 @@ class Parser(argparse.ArgumentParser):
         sys.exit(EXIT_USAGE)
 
 
-def error_panel_limit(series_mm, marks_mm):
-    """Top of the error axis: the 99.5th percentile with headroom, so that a few start-up
-    outliers do not squash the millimetres; clipped points are counted in the title."""
-    from refloc_plot_draw import percentile
-    top = max([percentile(s, 0.995) for s in series_mm] + marks_mm + [1.0])
-    return 1.25 * top if not math.isnan(top) else 10.0
-
-
-def legible_fix_markers(legend):
-    """Scatter entries drawn at one readable size in the legend (the plot's fixes are tiny)."""
-    handles = getattr(legend, "legend_handles", None) or getattr(legend, "legendHandles", [])
-    for handle in handles:
-        if hasattr(handle, "set_sizes"):
-            handle.set_sizes([25.0])
-            handle.set_alpha(0.9)
-
-
 def load_inputs(args):
     """Every input file, read before matplotlib loads: a bad file fails fast."""
     world = load_world(args.world, args.map)
     if args.command == "mission":
         return {"trace": load_trace(args.trace), "world": world}
+    if args.command == "drive":
+        return {"traces": [(name, load_trace(path)) for name, path in args.trace], "world": world}
     return {"rows": load_eval_csv(args.csv), "world": world,
             "reference": load_reference_csv(args.reference) if args.reference else []}
 
 
 def plot_mission(args, inputs, plt):
     from refloc_plot_draw import (LASER_COLOUR, POSE_COLOUR, TRUTH_COLOUR, WAYPOINT_COLOUR, add_scale_bar, draw_map,
-                                  draw_waypoints, rmse, set_map_axes)
+                                  draw_waypoints, error_panel_limit, legible_fix_markers, rmse, set_map_axes)
     trace, world = inputs["trace"], inputs["world"]
     truth, pose, laser, wps = (trace[k] for k in ("GROUND_TRUTH", "POSE", "LASER_POSE", "WAYPOINT"))
     fig = plt.figure(figsize=(14, 11), layout="constrained")
@@ -137,84 +125,11 @@ def plot_mission(args, inputs, plt):
     return fig
 
 
-def plot_eval(args, inputs, plt):
-    from matplotlib.ticker import MaxNLocator
-    from refloc_plot_draw import POSE_COLOUR, LASER_COLOUR, add_scale_bar, draw_map, percentile, rmse, set_map_axes
-    rows, world, reference = inputs["rows"], inputs["world"], inputs["reference"]
-    colours = {"default": POSE_COLOUR, "paper": LASER_COLOUR}
-    good = {m: [r for r in rows if r["mode"] == m and r["published_ok"] == 1 and r["wrong"] == 0] for m in colours}
-    fig = plt.figure(figsize=(13, 10), layout="constrained")
-    grid = fig.add_gridspec(2, 2, width_ratios=[1.2, 1], height_ratios=[1.5, 1])
-    ax_map, ax_xy, ax_pose = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1]), fig.add_subplot(grid[1, :])
-    fig.suptitle(args.title or f"refloc-eval: {os.path.basename(args.csv)}", fontsize=13)
-
-    draw_map(ax_map, world)
-    per_pose = {}
-    for r in good["default"]:
-        per_pose.setdefault(int(r["pose_index"]), (r["true_x_m"], r["true_y_m"], []))[2].append(
-            math.hypot(r["err_x_mm"], r["err_y_mm"]))
-    if per_pose:
-        px, py, pe = zip(*[(x, y, rmse(e)) for x, y, e in per_pose.values()])
-        points = ax_map.scatter(px, py, c=pe, s=22, cmap="viridis", zorder=4, label="poses (colour: default-mode RMSE)")
-        # Beside the drawn map, not the space an equal-aspect map leaves free.
-        colour_axis = ax_map.inset_axes([1.02, 0.05, 0.025, 0.9])
-        fig.colorbar(points, cax=colour_axis, label="default mode position RMSE at the pose [mm]")
-    for mode, marker in (("paper", "x"), ("default", "+")):
-        wrong = [r for r in rows if r["mode"] == mode and r["wrong"] == 1]
-        if wrong:
-            ax_map.scatter([r["true_x_m"] for r in wrong], [r["true_y_m"] for r in wrong], marker=marker, color="red",
-                           s=34, lw=1.4, zorder=5, label=f"wrong pose published by {mode} mode ({len(wrong)})")
-    xs = [p[0] for w in world["walls"] for p in w] + [r["true_x_m"] for r in rows]
-    ys = [p[1] for w in world["walls"] for p in w] + [r["true_y_m"] for r in rows]
-    set_map_axes(ax_map, xs, ys, margin_m=0.3)
-    add_scale_bar(ax_map, max(xs) - min(xs))
-    ax_map.legend(loc="upper left", bbox_to_anchor=(0.0, -0.1), ncol=2, fontsize=8, frameon=False)
-    ax_map.set_title("true poses of the study over the map", fontsize=10)
-
-    if reference:
-        ax_xy.scatter(*zip(*reference), marker="s", s=22, color="#999999", alpha=0.8, zorder=3,
-                      label=f"{args.reference_label} ({len(reference)})")
-    spans = [abs(v) for r in reference for v in r]
-    for mode in ("paper", "default"):
-        ex, ey = [r["err_x_mm"] for r in good[mode]], [r["err_y_mm"] for r in good[mode]]
-        if not ex:
-            continue
-        radial = [math.hypot(x, y) for x, y in zip(ex, ey)]
-        ax_xy.scatter(ex, ey, s=12, color=colours[mode], alpha=0.5, lw=0, zorder=4,
-                      label=f"{mode} mode ({len(ex)}), RMSE {rmse(radial):.1f} mm")
-        ax_xy.add_patch(plt.Circle((0, 0), rmse(radial), fill=False, ls="--", color=colours[mode], lw=1.2, zorder=5))
-        spans.append(percentile(radial, 0.99))
-    lim = 1.15 * max(spans + [1.0])
-    ax_xy.set_xlim(-lim, lim)
-    ax_xy.set_ylim(-lim, lim)
-    ax_xy.set_aspect("equal", adjustable="box")
-    ax_xy.axhline(0, color="#888888", lw=0.6)
-    ax_xy.axvline(0, color="#888888", lw=0.6)
-    ax_xy.grid(True, lw=0.4, color="#cccccc")
-    ax_xy.set_xlabel("x error (estimate − truth) [mm]")
-    ax_xy.set_ylabel("y error [mm]")
-    ax_xy.legend(loc="upper left", fontsize=8, framealpha=0.9)
-    ax_xy.set_title("position error per scan (dashed: RMSE); 99 % of points inside", fontsize=10)
-
-    # The modes side by side at each pose, the bound behind them.
-    bound = sorted({(int(r["pose_index"]) + 1, r["crlb_rmse_mm"]) for r in good["default"] if r["crlb_rmse_mm"] > 0})
-    if bound:
-        ax_pose.plot(*zip(*bound), color="#555555", lw=0, marker="_", ms=14 if len(bound) <= 50 else 4, mew=2.0, zorder=2,
-                     label="Cramér-Rao bound of the LMS100 beam (RMSE at the pose)")
-    per_scan = []
-    for mode, shift in (("paper", -0.15), ("default", 0.15)):
-        errors = [math.hypot(r["err_x_mm"], r["err_y_mm"]) for r in good[mode]]
-        per_scan += errors
-        ax_pose.scatter([r["pose_index"] + 1 + shift for r in good[mode]], errors, s=12, alpha=0.7, lw=0,
-                        color=colours[mode], label=f"{mode} mode", zorder=3)
-    ax_pose.set_ylim(0, 1.2 * max([percentile(per_scan, 0.995)] + [b for _, b in bound] + [1.0]))
-    ax_pose.xaxis.set_major_locator(MaxNLocator(integer=True))
-    ax_pose.set_xlabel("pose number")
-    ax_pose.set_ylabel("position error [mm]")
-    ax_pose.grid(True, lw=0.4, color="#cccccc")
-    ax_pose.legend(loc="upper center", ncol=3, fontsize=8, framealpha=0.9)
-    ax_pose.set_title("position error per scan by pose (published, not wrong)", fontsize=10)
-    return fig
+def source_and_file(text):
+    name, sep, path = text.partition("=")
+    if not sep or not name or not path:
+        raise argparse.ArgumentTypeError(f"'{text}': expected SOURCE=FILE")
+    return name, path
 
 
 def main(argv):
@@ -229,7 +144,10 @@ def main(argv):
     evaluation.add_argument("--csv", required=True, help="refloc-eval's measurement CSV")
     evaluation.add_argument("--reference", help="CSV of published errors (err_x_mm, err_y_mm) to show")
     evaluation.add_argument("--reference-label", default="paper's Table 1 (real LMS100)")
-    for p in (mission, evaluation):
+    drive = sub.add_parser("drive", help="refloc-eval drive: fixes per motion source (its trace CSVs)")
+    drive.add_argument("--trace", type=source_and_file, action="append", required=True,
+                       help="SOURCE=FILE: a motion source's trace (repeatable)")
+    for p in (mission, evaluation, drive):
         p.add_argument("--world", required=True, help="the world file the run used (walls; its map_file)")
         p.add_argument("--map", help="reflector map (default: the world's map_file)")
         p.add_argument("--out", action="append", help="picture file, format by extension (repeatable; "
@@ -238,7 +156,8 @@ def main(argv):
     args = parser.parse_args(argv)
     if args.command == "mission" and args.zoom_mm <= 0:
         parser.error(f"--zoom-mm must be above 0, got {args.zoom_mm}")
-    outputs = args.out or [os.path.splitext(args.trace if args.command == "mission" else args.csv)[0] + ".png"]
+    first_input = {"mission": lambda: args.trace, "eval": lambda: args.csv, "drive": lambda: args.trace[0][1]}
+    outputs = args.out or [os.path.splitext(first_input[args.command]())[0] + ".png"]
     for out in outputs:
         if os.path.splitext(out)[1].lower() not in (".png", ".svg", ".pdf"):
             parser.error(f"--out {out}: the extension must be .png, .svg or .pdf")
@@ -256,7 +175,8 @@ def main(argv):
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.fonttype"] = "none"  # SVG text stays text (searchable, smaller)
     import matplotlib.pyplot as plt
-    fig = plot_mission(args, inputs, plt) if args.command == "mission" else plot_eval(args, inputs, plt)
+    from refloc_plot_studies import plot_drive, plot_eval
+    fig = {"mission": plot_mission, "eval": plot_eval, "drive": plot_drive}[args.command](args, inputs, plt)
     for out in outputs:
         try:
             fig.savefig(out, dpi=110)

@@ -93,3 +93,33 @@ def percentile(values, share):
     if not finite:
         return math.nan
     return finite[min(len(finite) - 1, int(share * (len(finite) - 1) + 0.5))]
+
+
+def running_mean(times, values, window):
+    """Mean of the finite values within the last `window` (same unit as times) at each time."""
+    out, start, total, count = [], 0, 0.0, 0
+    for i, (t, v) in enumerate(zip(times, values)):
+        if not math.isnan(v):
+            total, count = total + v, count + 1
+        while times[start] < t - window:
+            if not math.isnan(values[start]):
+                total, count = total - values[start], count - 1
+            start += 1
+        out.append(total / count if count else math.nan)
+    return out
+
+
+def error_panel_limit(series_mm, marks_mm):
+    """Top of the error axis: the 99.5th percentile with headroom, so that a few start-up
+    outliers do not squash the millimetres; clipped points are counted in the title."""
+    top = max([percentile(s, 0.995) for s in series_mm] + marks_mm + [1.0])
+    return 1.25 * top if not math.isnan(top) else 10.0
+
+
+def legible_fix_markers(legend):
+    """Scatter entries drawn at one readable size in the legend (the plot's fixes are tiny)."""
+    handles = getattr(legend, "legend_handles", None) or getattr(legend, "legendHandles", [])
+    for handle in handles:
+        if hasattr(handle, "set_sizes"):
+            handle.set_sizes([25.0])
+            handle.set_alpha(0.9)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # tools/refloc-plot on small recorded data: a mission trace (the first two waypoints of a demo
-# run, thinned) and a refloc-eval paper-table CSV give non-empty PNG and SVG pictures with the
-# expected panels (the SVG keeps its text); bad input ends with the documented exit codes; and
-# refloc-eval itself draws its picture after its CSV.
+# run, thinned; also drawn as drive traces) and a refloc-eval paper-table CSV give non-empty PNG
+# and SVG pictures with the expected panels (the SVG keeps its text); bad input ends with the
+# documented exit codes; and refloc-eval itself draws its picture after its CSV.
 #   refloc_plot_test.sh REPO REFLOC_EVAL_BINARY
 set -euo pipefail
 repo="$1"
@@ -40,6 +40,12 @@ expect_text "$tmp/path.svg" "fixture mission" "x [m] (map frame)" "y [m]" "refle
 expect_text "$tmp/eval.svg" "x [m] (map frame)" "reflectors (9)" "x error (estimate − truth) [mm]" "y error [mm]" \
   "paper's Table 1 (real LMS100) (30)" "default mode (30)" "pose number" "Cramér-Rao bound"
 
+# drive: any trace with GROUND_TRUTH and LASER_POSE rows, one per motion source.
+"$plot" drive --trace odometry="$data/mission_trace.csv" --trace no_compensation="$data/mission_trace.csv" \
+  --world "$world" --out "$tmp/drive.svg" >/dev/null
+expect_text "$tmp/drive.svg" "x [m] (map frame)" "fixes, odometry (" "fixes, no_compensation (" \
+  "no_compensation: RMSE" "fix position error vs truth [mm]"
+
 # Bad input: exit 2 naming the file, usage errors 64.
 expect_exit 2 "$tmp/none.csv: cannot read" "$plot" mission --trace "$tmp/none.csv" --world "$world"
 printf 'kind,t_s,x_m,y_m,theta_rad,error_mm\nGROUND_TRUTH,zero,1,2,0,\n' >"$tmp/bad.csv"
@@ -49,6 +55,7 @@ expect_exit 2 "columns x_m, y_m, theta_rad, error_mm missing" "$plot" mission --
 expect_exit 2 "world_none.json: cannot read" "$plot" mission --trace "$data/mission_trace.csv" --world "$tmp/world_none.json"
 expect_exit 64 "the extension must be .png, .svg or .pdf" "$plot" mission --trace "$data/mission_trace.csv" \
   --world "$world" --out "$tmp/x.jpg"
+expect_exit 64 "'odometry': expected SOURCE=FILE" "$plot" drive --trace odometry --world "$world"
 expect_exit 64 "unrecognized arguments: --bogus" "$plot" eval --csv x.csv --world "$world" --bogus
 
 # refloc-eval draws its own picture next to its CSV.
@@ -57,4 +64,4 @@ expect_exit 64 "unrecognized arguments: --bogus" "$plot" eval --csv x.csv --worl
 expect_png "$tmp/study.png"
 expect_text "$tmp/study.svg" "refloc-eval paper-table (10 poses x 1 scans" "paper's Table 1"
 expect_text "$tmp/eval.out" "wrote $tmp/study.csv" "refloc-plot: wrote $tmp/study.png"
-echo "refloc-plot: mission and eval pictures, 6 bad inputs, refloc-eval's picture: all as expected"
+echo "refloc-plot: mission, eval and drive pictures, 7 bad inputs, refloc-eval's picture: all as expected"
