@@ -99,7 +99,10 @@ ServiceRuntime::ServiceRuntime(std::string service_name, const std::string& lcm_
   if (const int64_t clamped_to_bytes = receive_buffer_clamped_to_bytes(lcm_url_used); clamped_to_bytes > 0)
     counter("lcm_recv_buf_clamped_to_bytes") = clamped_to_bytes;
   install_signal_handlers();
-  add_periodic(1.0, [this] { publish_heartbeat(); });
+  add_periodic(1.0, [this] {
+    publish_heartbeat();
+    write_state_line(state_log_.on_tick(monotonic_us()));  // a flapping state's summary
+  });
   watch_heartbeats_for_duplicates();
   lcm_url_for_log_ = url;
 }
@@ -118,15 +121,19 @@ void ServiceRuntime::add_periodic(double period_s, std::function<void()> fn) {
 }
 
 void ServiceRuntime::set_state(int8_t state, const std::string& detail) {
-  if (state != state_ || detail != state_detail_) {
-    if (state == heartbeat_t::STATE_ERROR) {
-      spdlog::error("state {}: {}", static_cast<int>(state), detail);
-    } else {
-      spdlog::info("state {}{}{}", static_cast<int>(state), detail.empty() ? "" : ": ", detail);
-    }
-  }
+  if (state != state_ || detail != state_detail_)
+    write_state_line(state_log_.on_change(state, detail, monotonic_us()));
   state_ = state;
   state_detail_ = detail;
+}
+
+void ServiceRuntime::write_state_line(const std::optional<StateChangeLogLimiter::Line>& line) {
+  if (!line) return;
+  if (line->error) {
+    spdlog::error("{}", line->text);
+  } else {
+    spdlog::info("{}", line->text);
+  }
 }
 
 bool ServiceRuntime::stop_requested() const { return stop_requested_ || g_signal_received != 0; }

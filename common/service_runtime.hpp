@@ -10,6 +10,7 @@
 #include "common/instance_lock.hpp"
 #include "common/latency_window.hpp"
 #include "common/lcm_bounded_decode.hpp"
+#include "common/log_rate_limiter.hpp"
 
 #include <spdlog/spdlog.h>
 #include <lcm/lcm-cpp.hpp>
@@ -20,6 +21,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,6 +60,8 @@ class ServiceRuntime {
   /// Call fn every period_s seconds from the handle loop (drift-free schedule).
   void add_periodic(double period_s, std::function<void()> fn);
 
+  /// Logs the change by state name ("state DEGRADED (was OK): ..."), at most one line per 10 s
+  /// while the state keeps changing, then a summary of the changes not logged (StateChangeLogLimiter).
   void set_state(int8_t state, const std::string& detail = "");
   int8_t state() const { return state_; }
   /// A service-specific counter reported in the heartbeat (created at 0 on first use).
@@ -94,6 +98,7 @@ class ServiceRuntime {
                                  ServiceRuntime* self);
   std::pair<int8_t, std::string> reported_state(int64_t start_utime);
   void feed_watchdog_if_due();
+  static void write_state_line(const std::optional<StateChangeLogLimiter::Line>& line);
 
   struct Periodic {
     int64_t period_us;
@@ -110,6 +115,7 @@ class ServiceRuntime {
   LatencyWindow processing_;
   int8_t state_ = heartbeat_t::STATE_STARTING;
   std::string state_detail_;
+  StateChangeLogLimiter state_log_;
   int64_t start_monotonic_us_ = 0;
   int64_t messages_in_ = 0;
   int64_t messages_out_ = 0;
