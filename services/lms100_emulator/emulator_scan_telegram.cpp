@@ -48,6 +48,7 @@ void Lms100Emulator::Server::emit_scan(const ScanSlot& slot, bool stream) {
   header.time_of_transmission_us = static_cast<uint32_t>(config.power_up_clock_us + slot.complete_us);
   header.scan_frequency_1e2hz = device.scan_frequency_1e2hz();
   header.measurement_frequency_1e1khz = kMeasurementFrequency1e1khz;
+  header.reserved = settings.layer_angle_1e4deg;  // the multi-layer fault; 0 on an LMS1xx
 
   LmdOutputOptions options;
   options.rssi_bits = scan.rssi_bits;

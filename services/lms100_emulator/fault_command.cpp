@@ -51,7 +51,7 @@ std::string describe(const FaultSettings& s) {
   if (s.corrupts_scan_header()) {
     out << ", header: scale " << s.dist_scale << ", offset " << s.dist_offset_mm << " mm, scan-frequency "
         << s.scan_frequency_1e2hz << ", beam-rate " << s.measurement_frequency_1e1khz << ", codes "
-        << (s.reserved_distance_codes ? "on" : "off");
+        << (s.reserved_distance_codes ? "on" : "off") << ", layer " << s.layer_angle_1e4deg;
   }
   return out.str();
 }
@@ -112,6 +112,9 @@ bool apply_fault_command(const std::string& line, FaultInjector& faults, std::st
   } else if (command == "codes" && one_arg && parse_on_off(arg, flag)) {
     settings.reserved_distance_codes = flag;
     faults.set_settings(settings);
+  } else if (command == "layer" && one_arg && parse_count(arg, 0xFFFF, n)) {
+    settings.layer_angle_1e4deg = static_cast<uint16_t>(n);
+    faults.set_settings(settings);
   } else if (command == "header" && one_arg && arg == "ok") {
     const FaultSettings honest;
     settings.dist_scale = honest.dist_scale;
@@ -119,6 +122,7 @@ bool apply_fault_command(const std::string& line, FaultInjector& faults, std::st
     settings.scan_frequency_1e2hz = honest.scan_frequency_1e2hz;
     settings.measurement_frequency_1e1khz = honest.measurement_frequency_1e1khz;
     settings.reserved_distance_codes = honest.reserved_distance_codes;
+    settings.layer_angle_1e4deg = honest.layer_angle_1e4deg;
     faults.set_settings(settings);
   } else if (command == "status" && no_arg) {
   } else {
@@ -129,7 +133,7 @@ bool apply_fault_command(const std::string& line, FaultInjector& faults, std::st
         "unknown or malformed command '" + line +
         "' (drop N | stall MS | close | reset | refuse-write | ready on|off | split none|random|boundaries"
         " | merge N | junk N | duplicate on|off | scale F | offset MM | scan-frequency HZx100"
-        " | beam-rate HZ/100 | codes on|off | header ok | status)";
+        " | beam-rate HZ/100 | codes on|off | layer N | header ok | status)";
     return false;
   }
   message = "ok: " + describe(faults.settings());

@@ -5,7 +5,8 @@
 //   drop N | stall MS | close | reset | refuse-write | ready on|off
 //   split none|random|boundaries | merge N | junk N | duplicate on|off | status
 //   scale F | offset MM | scan-frequency N (Hz x 100, 0 = own) | beam-rate N (x 100 Hz, 0 = own)
-//   codes on|off (reserved distance codes 2..15 in beams 0..13) | header ok (all four honest)
+//   codes on|off (reserved distance codes 2..15 in beams 0..13) | layer N (layer angle, x 1e-4 deg,
+//   uint16; != 0 is a multi-layer telegram) | header ok (every header field honest)
 
 #include "lms100_emulator/fault_injection.hpp"
 

@@ -37,7 +37,7 @@ void append_junk_bytes(size_t count, std::mt19937& rng, std::string& out) {
 
 bool FaultSettings::corrupts_scan_header() const {
   return dist_scale != 1.0F || dist_offset_mm != 0.0F || scan_frequency_1e2hz != 0 ||
-         measurement_frequency_1e1khz != 0 || reserved_distance_codes;
+         measurement_frequency_1e1khz != 0 || reserved_distance_codes || layer_angle_1e4deg != 0;
 }
 
 namespace {

@@ -35,6 +35,9 @@ struct FaultSettings {
   uint32_t scan_frequency_1e2hz = 0;          ///< 0: the device's own; else claimed [Hz x 100]
   uint32_t measurement_frequency_1e1khz = 0;  ///< 0: the device's own; else claimed beam rate [kHz x 10]
   bool reserved_distance_codes = false;       ///< beams 0..13 carry the reserved codes 2..15
+  /// Layer angle sent [deg x 1e4, uint16 two's complement]: != 0 claims a multi-layer MRS telegram.
+  /// Set in the header before encoding, so it reaches CoLa-B telegrams too.
+  uint16_t layer_angle_1e4deg = 0;
 
   /// Whether any header field is falsified.
   bool corrupts_scan_header() const;

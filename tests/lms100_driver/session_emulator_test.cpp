@@ -143,6 +143,42 @@ TEST_P(SessionEmulatorDialectTest, HundredConsecutiveScansEqualWhatTheEmulatorSe
   EXPECT_EQ(session_->counters().unexpected_frames.load(), 0u);
 }
 
+TEST_P(SessionEmulatorDialectTest, MultiLayerTelegramsAreRefusedCountedAndNeverPublished) {
+  start_emulator();
+  std::vector<std::string> refusals;
+  std::mutex refusals_mutex;
+  Lms100SessionConfig config;
+  config.host = "127.0.0.1";
+  config.port = port_;
+  config.dialect = dialect_;
+  config.scan_timeout_periods = 50.0;  // a reconnect on a loaded host is not what this test is about
+  session_ = std::make_unique<Lms100Session>(config, [this](const LaserScan& s) { sink_(s); });
+  session_->set_reject_callback([&](const ScanPlausibility& p) {
+    std::lock_guard<std::mutex> lock(refusals_mutex);
+    refusals.push_back(p.detail);
+  });
+  session_->start_thread();
+  ASSERT_TRUE(sink_.wait_for(5, 5s));
+  FaultSettings layered = emulator_->faults().settings();
+  layered.layer_angle_1e4deg = 0xFF06;  // -250 x 1e-4 deg, an MRS1000's lower layer
+  emulator_->faults().set_settings(layered);
+  std::this_thread::sleep_for(300ms);
+  const size_t published_while_layered = sink_.count();
+  std::this_thread::sleep_for(200ms);
+  EXPECT_EQ(sink_.count(), published_while_layered) << "a multi-layer scan was published";
+  EXPECT_GE(session_->counters().multi_layer_scans.load(), 5u);
+  EXPECT_EQ(session_->counters().multi_layer_scans.load(), session_->counters().implausible_scans.load());
+  EXPECT_EQ(session_->counters().parse_errors.load(), 0u);
+  {
+    std::lock_guard<std::mutex> lock(refusals_mutex);
+    ASSERT_FALSE(refusals.empty());
+    EXPECT_NE(refusals.front().find("multi-layer scanner"), std::string::npos) << refusals.front();
+  }
+  layered.layer_angle_1e4deg = 0;
+  emulator_->faults().set_settings(layered);
+  ASSERT_TRUE(sink_.wait_for(published_while_layered + 5, 3s));
+}
+
 TEST_F(SessionEmulatorTest, FirstBeamTimeIsWithinTwoMillisecondsOfTheEmulatorsBeamTime) {
   start_emulator();
   start_session();
