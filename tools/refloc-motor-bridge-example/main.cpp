@@ -1,17 +1,21 @@
 // refloc-motor-bridge-example: a minimal motor-controller bridge. CMD_VEL (twist_t) in,
 // four wheel speed setpoints to the controller (zero once no command arrived for
-// --command-timeout-s), the controller's cumulative counts out on WHEEL_ENCODERS
-// (wheel_encoders_t) at --encoder-rate-hz. The controller here is a stub
-// (stub_motor_controller.hpp); docs/real-robot.md says what to replace.
+// command_timeout_s), the controller's cumulative counts out on WHEEL_ENCODERS
+// (wheel_encoders_t) at encoder_rate_hz (config file keys: motor_bridge_config.cpp). The controller here is a
+// stub (stub_motor_controller.hpp); docs/real-robot.md says what to replace.
 
 #include "motor_bridge.hpp"
+#include "motor_bridge_config.hpp"
 #include "stub_motor_controller.hpp"
 
 #include "common/clock.hpp"
+#include "common/json_config.hpp"
+#include "common/node_event_report.hpp"
 #include "common/robot_config.hpp"
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
 
+#include <fmt/format.h>
 #include <CLI/CLI.hpp>
 #include <refloc/heartbeat_t.hpp>
 #include <refloc/twist_t.hpp>
@@ -22,11 +26,6 @@
 namespace refloc {
 namespace {
 
-struct BridgeOptions {
-  MotorBridgeConfig bridge;
-  int32_t start_ticks = 0;
-};
-
 wheel_encoders_t encoders_message(const EncoderReading& reading) {
   wheel_encoders_t msg{};
   msg.utime = reading.utime;
@@ -34,20 +33,23 @@ wheel_encoders_t encoders_message(const EncoderReading& reading) {
   return msg;
 }
 
-int run(const ServiceCommandLine& cli, const BridgeOptions& options) {
+int run(const ServiceCommandLine& cli, int32_t start_ticks) {
   const RobotConfig robot = load_robot_config(cli.robot_path);
+  const MotorBridgeConfig config = load_motor_bridge_config(cli.config_path);
   ServiceRuntime runtime("motor_bridge", cli.lcm_url);
-  MotorBridge bridge(robot, options.bridge);
-  StubMotorController controller(robot.encoder_ticks_per_rev, options.start_ticks, monotonic_us());
+  MotorBridge bridge(robot, config);
+  StubMotorController controller(robot.encoder_ticks_per_rev, start_ticks, monotonic_us());
 
   runtime.subscribe<twist_t>("CMD_VEL", [&](const twist_t& msg) {
     const CommandVerdict verdict = bridge.on_command({msg.vx, msg.vy, msg.wz}, monotonic_us());
-    if (verdict != CommandVerdict::kAccepted) {
-      ++runtime.counter(std::string("rejected_cmd_vel_") + to_string(verdict));
-      spdlog::warn("CMD_VEL ({}, {}, {}) refused: {}", msg.vx, msg.vy, msg.wz, to_string(verdict));
-    }
+    if (verdict == CommandVerdict::kAccepted) return;
+    const char* counter = verdict == CommandVerdict::kNonFinite ? "rejected_cmd_vel_nonfinite"
+                                                                : "rejected_cmd_vel_out_of_bounds";
+    report_events(runtime, {{counter, NodeEvent::Level::kWarn,
+                             fmt::format("CMD_VEL ({}, {}, {}) refused, previous command kept: {}", msg.vx,
+                                         msg.vy, msg.wz, to_string(verdict))}});
   });
-  runtime.add_periodic(1.0 / options.bridge.encoder_rate_hz, [&] {
+  runtime.add_periodic(1.0 / config.encoder_rate_hz, [&] {
     const int64_t now = monotonic_us();
     const WheelSetpoint setpoint = bridge.setpoint(now);
     controller.set_wheel_speeds(setpoint.speed_rad_s, now);
@@ -71,18 +73,10 @@ int main(int argc, char** argv) {
       "");
   cli.add_robot_option(
       "robot geometry file (JSON): wheel radius, lx, ly, ticks per revolution, max wheel speed");
-  refloc::BridgeOptions o;
+  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_motor_bridge_config(f); });
+  int32_t start_ticks = 0;
   cli.app
-      .add_option("--command-timeout-s", o.bridge.command_timeout_s,
-                  "stop the wheels when no CMD_VEL arrived for this long [s]")
-      ->check(CLI::Range(0.02, 2.0))
+      .add_option("--start-ticks", start_ticks, "the stub controller's counts at start (they wrap as int32)")
       ->capture_default_str();
-  cli.app.add_option("--encoder-rate-hz", o.bridge.encoder_rate_hz, "WHEEL_ENCODERS rate [Hz]")
-      ->check(CLI::Range(20.0, 1000.0))
-      ->capture_default_str();
-  cli.app
-      .add_option("--start-ticks", o.start_ticks,
-                  "the stub controller's counts at start (they wrap as int32)")
-      ->capture_default_str();
-  return cli.run(argc, argv, [&] { return refloc::run(cli, o); });
+  return cli.run(argc, argv, [&] { return refloc::run(cli, start_ticks); });
 }
