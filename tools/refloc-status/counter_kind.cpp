@@ -8,17 +8,19 @@ namespace {
 
 // Counters of normal operation and gauges (values, not counts), by the services that send
 // them. Listed, not guessed from the name: "lost_scans" and "scans" differ by one word.
-constexpr std::array<std::string_view, 20> kNormalCounters = {
+constexpr std::array<std::string_view, 24> kNormalCounters = {
     // lms100_driver: link and stamping
     "connects", "scans", "scans_in_bursts", "held_scans", "held_scan_max_delay_us",
     // lms100_emulator and robot_sim's emulated sensor
     "clients_accepted", "requests", "scan_telegrams_sent", "laser_clients_accepted", "laser_scans_sent",
-    // reflector_extractor
-    "rssi_scale_8bit", "scans_compensated_odometry", "scans_compensated_fixes",
+    // reflector_extractor: motion compensation, and bright clusters it classified as not a
+    // reflector (tape, metal, cut by an occluder): its filter at work, thousands a minute
+    "rssi_scale_8bit", "scans_compensated_odometry", "scans_compensated_fixes", "rejected_shape",
+    "rejected_too_few_beams", "rejected_occluded",
     // reflector_matcher
     "global_relocalizations", "startup_scans_without_prior",
-    // pose_solver: the range bias gauges
-    "range_bias_um", "range_bias_sigma_um",
+    // pose_solver: the range bias gauges, and fixes where b was held (said in the OK detail)
+    "range_bias_um", "range_bias_sigma_um", "range_bias_unestimable_fixes",
     // pose_fusion
     "fixes_accepted", "initialisations", "fixes_deferred"};
 

@@ -36,7 +36,7 @@ StatusPage stack_page() {
             {{"connects", 3}, {"scans", 25000}, {"reconnects", 2}, {"timeouts", 5}, {"held_scans", 0}}),
        {0, 50}},
       {beat("reflector_extractor", 2001, 1, "",
-            {{"scans_compensated_odometry", 24000}, {"rejected_shape", 12}}),
+            {{"scans_compensated_odometry", 24000}, {"rejected_shape", 12}, {"scans_without_reflectors", 3}}),
        {50, 50}},
       {beat("reflector_matcher", 2002, 1, "", {{"global_relocalizations", 1}}), {50, 50}},
       {beat("pose_solver", 2003, 2, "last fix DEGRADED",
@@ -108,7 +108,8 @@ TEST(StatusTable, ErrorCountersStandApartFromNormalOnes) {
   EXPECT_NE(text.find("  lms100_driver: reconnects=2 timeouts=5\n"), std::string::npos) << text;
   EXPECT_NE(text.find("  reflector_matcher: decode_errors=2\n"), std::string::npos) << text;
   EXPECT_NE(text.find("  pose_fusion: fixes_rejected_gate=4\n"), std::string::npos) << text;
-  for (const char* normal : {" connects=", " scans=", "fixes_accepted", "range_bias_um", "laser_scans_sent"})
+  for (const char* normal :
+       {" connects=", " scans=", "rejected_shape", "fixes_accepted", "range_bias_um", "laser_scans_sent"})
     EXPECT_EQ(text.find(normal), std::string::npos) << normal << " is normal work, not an error:\n" << text;
 }
 
