@@ -65,8 +65,9 @@ std::string StateChangeLogLimiter::take_held_back(int64_t now_us) {
   for (const auto& [state, count] : held_back_to_)
     into += (into.empty() ? "" : ", ") + std::to_string(count) + "x " + heartbeat_state_name(state);
   const int64_t seconds = (now_us - last_line_us_ + 500'000) / 1'000'000;
-  const std::string text = " (" + std::to_string(held_back_) + " changes in the last " +
-                           std::to_string(seconds) + " s not logged one by one: " + into + ")";
+  const std::string text = " (" + std::to_string(held_back_) + (held_back_ == 1 ? " change" : " changes") +
+                           " in the last " + std::to_string(seconds) + " s not logged one by one: " + into +
+                           ")";
   held_back_ = 0;
   held_back_to_.clear();
   return text;
