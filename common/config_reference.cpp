@@ -65,7 +65,8 @@ void print(const Node& node, int depth, std::string& out) {
     const Node& c = *node.children[i];
     const std::string inner(static_cast<size_t>(2 * depth + 2), ' ');
     if (c.key) out += inner + "// " + describe(*c.key) + "\n";
-    for (const ConfigKeyRecord* e : c.element_keys) out += inner + "//   " + e->pointer + ": " + describe(*e) + "\n";
+    for (const ConfigKeyRecord* e : c.element_keys)
+      out += inner + "//   " + e->pointer + ": " + describe(*e) + "\n";
     out += inner + nlohmann::json(c.name).dump() + ": ";
     if (c.key && c.children.empty())
       out += c.key->value.dump();
@@ -105,7 +106,8 @@ std::string annotated_config_text(const std::vector<ConfigKeyRecord>& keys, cons
 
 std::string config_reference_markdown(const std::vector<ConfigKeyRecord>& keys) {
   const auto cell = [](std::string text) {
-    for (size_t pos = 0; (pos = text.find('|', pos)) != std::string::npos; pos += 2) text.replace(pos, 1, "\\|");
+    for (size_t pos = 0; (pos = text.find('|', pos)) != std::string::npos; pos += 2)
+      text.replace(pos, 1, "\\|");
     return text;
   };
   std::string out = "| key | type | unit | default | range | meaning |\n|---|---|---|---|---|---|\n";

@@ -1,11 +1,9 @@
 #include "common/json_config.hpp"
 
+#include "common/bounded_file_read.hpp"
 #include "common/json_config_nesting.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cmath>
@@ -19,6 +17,7 @@ namespace {
 using json_config_detail::escape_key;
 using json_config_detail::NestingLimitedDom;
 using json_config_detail::printable;
+using json_config_detail::read_bounded_file;
 
 // Containers are described by their size: dump() would recurse over the whole subtree.
 std::string describe(const nlohmann::json& value) {
@@ -43,50 +42,6 @@ std::string range_text(double min, double max) {
   if (has_min) return fmt::format(" >= {}", min);
   if (has_max) return fmt::format(" <= {}", max);
   return "";
-}
-
-const char* file_kind(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
-// Reads at most kMaxConfigFileBytes of a regular file. O_NONBLOCK: opening a FIFO must not
-// wait for a writer; fstat on the open descriptor, so the file checked is the file read.
-std::string read_bounded_file(const std::string& path) {
-  const std::string name = printable(path, 400);
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
-  if (fd < 0) throw ConfigError(fmt::format("{}: cannot open the file: {}", name, std::strerror(errno)));
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  struct stat st {};
-  if (::fstat(fd, &st) != 0)
-    throw ConfigError(fmt::format("{}: cannot open the file: {}", name, std::strerror(errno)));
-  if (!S_ISREG(st.st_mode))
-    throw ConfigError(
-        fmt::format("{}: is {}; config and map files must be regular files", name, file_kind(st.st_mode)));
-  const auto too_big = [&] {
-    return ConfigError(
-        fmt::format("{}: larger than {} bytes; config and map files are smaller", name, kMaxConfigFileBytes));
-  };
-  if (static_cast<unsigned long long>(st.st_size) > kMaxConfigFileBytes) throw too_big();
-  std::string text(kMaxConfigFileBytes + 1, '\0');
-  size_t used = 0;
-  while (used < text.size()) {  // the size may have changed since fstat (or be 0 in /proc)
-    const ssize_t n = ::read(fd, text.data() + used, text.size() - used);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw ConfigError(fmt::format("{}: cannot read the file: {}", name, std::strerror(errno)));
-    if (n == 0) break;
-    used += static_cast<size_t>(n);
-  }
-  if (used > kMaxConfigFileBytes) throw too_big();
-  text.resize(used);
-  return text;
 }
 
 }  // namespace
@@ -247,7 +202,8 @@ bool JsonConfig::boolean(const ConfigKey& key, bool default_value) const {
   const std::string& pointer = key.pointer;
   mark_used(pointer);
   const nlohmann::json* value = find(pointer);
-  if (value && !value->is_boolean()) fail(pointer, fmt::format("expected true or false, got {}", describe(*value)));
+  if (value && !value->is_boolean())
+    fail(pointer, fmt::format("expected true or false, got {}", describe(*value)));
   const bool v = value ? value->get<bool>() : default_value;
   record(key, "boolean", "", false, default_value, v);
   return v;
@@ -294,7 +250,8 @@ size_t JsonConfig::array_size(const ConfigKey& key, bool required) const {
 JsonConfig JsonConfig::child(const std::string& pointer) const {
   used_whole_.insert(pointer);
   const nlohmann::json* value = find(pointer);
-  if (value && !value->is_object()) fail(pointer, fmt::format("expected an object, got {}", describe(*value)));
+  if (value && !value->is_object())
+    fail(pointer, fmt::format("expected an object, got {}", describe(*value)));
   JsonConfig sub(value ? *value : nlohmann::json::object(), source_ + " " + pointer);
   sub.records_ = records_;
   sub.record_prefix_ = record_prefix_ + pointer;

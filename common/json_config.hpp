@@ -33,7 +33,7 @@ inline constexpr int kMaxConfigNestingDepth = 32;
 ///   config.number({"/wheel_radius_m", "m", "radius of a wheel at its rollers"}, 0.05, 0.01, 1.0)
 /// A bare pointer (maps, test data) records the key without documentation.
 struct ConfigKey {
-  ConfigKey(const char* pointer) : pointer(pointer) {}  // NOLINT: implicit on purpose
+  ConfigKey(const char* pointer) : pointer(pointer) {}             // NOLINT: implicit on purpose
   ConfigKey(std::string pointer) : pointer(std::move(pointer)) {}  // NOLINT
   ConfigKey(std::string pointer, std::string unit, std::string meaning)
       : pointer(std::move(pointer)), unit(std::move(unit)), meaning(std::move(meaning)) {}
@@ -70,8 +70,7 @@ class JsonConfig {
   bool has(const std::string& pointer) const;
 
   /// Optional finite number in [min, max]; default when the key is absent.
-  double number(const ConfigKey& key, double default_value,
-                double min = -std::numeric_limits<double>::max(),
+  double number(const ConfigKey& key, double default_value, double min = -std::numeric_limits<double>::max(),
                 double max = std::numeric_limits<double>::max()) const;
   /// Required finite number in [min, max].
   double required_number(const ConfigKey& key, double min = -std::numeric_limits<double>::max(),
@@ -83,8 +82,7 @@ class JsonConfig {
   long long integer(const ConfigKey& key, long long default_value,
                     long long min = std::numeric_limits<long long>::min(),
                     long long max = std::numeric_limits<long long>::max()) const;
-  long long required_integer(const ConfigKey& key,
-                             long long min = std::numeric_limits<long long>::min(),
+  long long required_integer(const ConfigKey& key, long long min = std::numeric_limits<long long>::min(),
                              long long max = std::numeric_limits<long long>::max()) const;
   bool boolean(const ConfigKey& key, bool default_value) const;
   std::string string(const ConfigKey& key, const std::string& default_value) const;

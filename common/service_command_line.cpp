@@ -34,8 +34,8 @@ void ServiceCommandLine::set_config_reader(std::function<void(const JsonConfig&)
 
 int ServiceCommandLine::print_config(bool robot) const {
   const std::string& path = robot ? robot_path : config_path;
-  const JsonConfig file =
-      path.empty() ? JsonConfig(nlohmann::json::object(), "(built-in defaults)") : JsonConfig::load_file(path);
+  const JsonConfig file = path.empty() ? JsonConfig(nlohmann::json::object(), "(built-in defaults)")
+                                       : JsonConfig::load_file(path);
   if (robot) {
     parse_robot_config(file);
   } else if (config_reader_) {
@@ -47,10 +47,9 @@ int ServiceCommandLine::print_config(bool robot) const {
   if (print_format_ == "markdown") {
     std::cout << config_reference_markdown(file.key_records());
   } else {
-    std::cout << annotated_config_text(file.key_records(),
-                                       service_name_ + (robot ? " robot file" : " config") + " (" +
-                                           refloc_version() + ")\nread from " +
-                                           (path.empty() ? "(built-in defaults)" : path));
+    std::cout << annotated_config_text(
+        file.key_records(), service_name_ + (robot ? " robot file" : " config") + " (" + refloc_version() +
+                                ")\nread from " + (path.empty() ? "(built-in defaults)" : path));
   }
   return 0;
 }

@@ -19,7 +19,8 @@ JsonConfig read_example(const std::string& text) {
   sub.positive_number({"/max_age_s", "s", "oldest fix used"}, 0.5, 10.0, "no fix would be used");
   sub.boolean("/enabled", true);  // undocumented on purpose
   const size_t n = file.array_size({"/points", "", "list of points"}, false);
-  for (size_t i = 0; i < n; ++i) file.number({"/points/" + std::to_string(i) + "/x", "m", "x of a point"}, 0.0);
+  for (size_t i = 0; i < n; ++i)
+    file.number({"/points/" + std::to_string(i) + "/x", "m", "x of a point"}, 0.0);
   file.reject_unknown_keys();
   return file;
 }
@@ -61,8 +62,10 @@ TEST(ConfigReference, MarkdownRows) {
   file.string({"/channel", "", "LCM channel | input"}, "SCAN");
   file.number({"/rate_hz", "Hz", "publish rate"}, 50.0, 1.0, 100.0);
   const std::string md = config_reference_markdown(file.key_records());
-  EXPECT_NE(md.find("| `/channel` | string |  | `\"SCAN\"` |  | LCM channel \\| input |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| `/rate_hz` | number | Hz | `50.0` | in [1, 100] | publish rate |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| `/channel` | string |  | `\"SCAN\"` |  | LCM channel \\| input |"), std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| `/rate_hz` | number | Hz | `50.0` | in [1, 100] | publish rate |"), std::string::npos)
+      << md;
 }
 
 TEST(ConfigReference, CommentsInAConfigFileAreAccepted) {
