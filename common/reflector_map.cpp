@@ -104,9 +104,15 @@ int ReflectorMap::index_of(int id) const {
 
 ReflectorMap parse_reflector_map(const JsonConfig& config, const std::string& pointer) {
   constexpr double kMaxCoordinate_m = 1e5;  // 100 km: beyond any factory, catches unit mistakes
-  const double default_radius = config.number(pointer + "/default_radius_m", 0.06, 1e-3, 5.0);
+  const double default_radius =
+      config.number({pointer + "/default_radius_m", "m",
+                     "cylinder radius of reflectors without their own radius_m (120 mm "
+                     "diameter: 0.06); the matcher's occlusion check and the simulator use it"},
+                    0.06, 1e-3, 5.0);
   const std::string list = pointer + "/reflectors";
-  const size_t n = config.array_size(list);
+  const size_t n = config.array_size(
+      {list, "",
+       "the reflectors [{id, x, y, radius_m}], at least 3, not colinear, at least r1 + r2 + 10 mm apart"});
   if (n < 3) config.fail(list, fmt::format("expected at least 3 reflectors, got {}", n));
 
   ReflectorMap map;
@@ -116,16 +122,23 @@ ReflectorMap parse_reflector_map(const JsonConfig& config, const std::string& po
   for (size_t i = 0; i < n; ++i) {
     const std::string item = fmt::format("{}/{}", list, i);
     MapReflector r;
-    const long long id = config.required_integer(item + "/id", 0, 1000000000);
+    const long long id = config.required_integer(
+        {item + "/id", "", "unique reflector id; REFLECTOR_MATCHES and the logs name reflectors by it"}, 0,
+        1000000000);
     const auto [it, inserted] = first_index_of_id.emplace(id, i);
     if (!inserted) {
       config.fail(item + "/id",
                   fmt::format("duplicate reflector id {} (also at {}/{})", id, list, it->second));
     }
     r.id = static_cast<int>(id);
-    r.map_p_center.x() = config.required_number(item + "/x", -kMaxCoordinate_m, kMaxCoordinate_m);
-    r.map_p_center.y() = config.required_number(item + "/y", -kMaxCoordinate_m, kMaxCoordinate_m);
-    r.radius = config.number(item + "/radius_m", default_radius, 1e-3, 5.0);
+    r.map_p_center.x() =
+        config.required_number({item + "/x", "m", "centre x in the map frame (surveyed; metres, not mm)"},
+                               -kMaxCoordinate_m, kMaxCoordinate_m);
+    r.map_p_center.y() = config.required_number({item + "/y", "m", "centre y in the map frame"},
+                                                -kMaxCoordinate_m, kMaxCoordinate_m);
+    r.radius =
+        config.number({item + "/radius_m", "m", "this reflector's cylinder radius, if not default_radius_m"},
+                      default_radius, 1e-3, 5.0);
     map.reflectors.push_back(r);
     spacing.add(map.reflectors);
   }

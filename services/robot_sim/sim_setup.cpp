@@ -10,14 +10,17 @@ namespace refloc {
 SimSetup parse_sim_setup(const JsonConfig& file, const std::string& base_dir) {
   SimSetup s;
   s.plant = parse_plant_setup(file);
-  s.encoder_rate = file.number({"/encoder_rate_hz", "Hz", "WHEEL_ENCODERS publish rate of the simulated motor controller"},
-                               s.encoder_rate, 1.0, 1000.0);
-  s.ground_truth_rate = file.number({"/ground_truth_rate_hz", "Hz", "GROUND_TRUTH publish rate (the simulator's true pose)"},
-                                    s.ground_truth_rate, 1.0, 1000.0);
-  s.command_channel = file.string({"/command_channel", "", "LCM channel of the velocity commands the plant follows"},
-                                  s.command_channel);
+  s.encoder_rate =
+      file.number({"/encoder_rate_hz", "Hz", "WHEEL_ENCODERS publish rate of the simulated motor controller"},
+                  s.encoder_rate, 1.0, 1000.0);
+  s.ground_truth_rate =
+      file.number({"/ground_truth_rate_hz", "Hz", "GROUND_TRUTH publish rate (the simulator's true pose)"},
+                  s.ground_truth_rate, 1.0, 1000.0);
+  s.command_channel = file.string(
+      {"/command_channel", "", "LCM channel of the velocity commands the plant follows"}, s.command_channel);
   const std::string world = file.string(
-      {"/world_file", "", "world the emulated LMS100 sees (reflectors, walls), relative to this file; \"\": no laser"},
+      {"/world_file", "",
+       "world the emulated LMS100 sees (reflectors, walls), relative to this file; \"\": no laser"},
       "");
   if (!world.empty()) s.world_path = (std::filesystem::path(base_dir) / world).string();
   // Read even when absent, so --print-config and docs/parameters.md list every key.

@@ -70,13 +70,32 @@ int32_t rssi_for_bits(double rssi16, int rssi_bits) {
 ScanRenderConfig parse_scan_render_config(const JsonConfig& config, const std::string& p) {
   ScanRenderConfig c;
   ScanGeometry& g = c.geometry;
-  g.num_beams = static_cast<int>(config.integer(p + "/num_beams", g.num_beams, 1, 10000));
-  g.start_angle = config.number(p + "/start_angle_deg", g.start_angle / kDegToRad, -180.0, 180.0) * kDegToRad;
-  g.angle_increment =
-      config.number(p + "/angle_increment_deg", g.angle_increment / kDegToRad, 0.01, 10.0) * kDegToRad;
-  g.scan_period = 1.0 / config.number(p + "/scan_frequency_hz", 1.0 / g.scan_period, 1.0, 100.0);
-  g.time_increment = 1.0 / config.number(p + "/beam_rate_hz", 1.0 / g.time_increment, 100.0, 1e6);
-  const long long bits = config.integer(p + "/rssi_bits", c.rssi_bits, 0, 16);
+  g.num_beams = static_cast<int>(config.integer({p + "/num_beams", "count",
+                                                 "beams per scan (541: 270 deg at 0.5 deg); the emulator "
+                                                 "renders the count its scan setup asks for instead"},
+                                                g.num_beams, 1, 10000));
+  g.start_angle = config.number({p + "/start_angle_deg", "deg",
+                                 "angle of beam 0 in the laser frame (0 ahead, counter-clockwise); the "
+                                 "emulator uses its scan setup's"},
+                                g.start_angle / kDegToRad, -180.0, 180.0) *
+                  kDegToRad;
+  g.angle_increment = config.number({p + "/angle_increment_deg", "deg",
+                                     "angle between neighbouring beams; the emulator uses its scan setup's "
+                                     "(emulator/angular_resolution_deg)"},
+                                    g.angle_increment / kDegToRad, 0.01, 10.0) *
+                      kDegToRad;
+  g.scan_period = 1.0 / config.number({p + "/scan_frequency_hz", "Hz",
+                                       "scans per second, stamped into rendered scans; the emulator's rate "
+                                       "is emulator/scan_frequency_hz"},
+                                      1.0 / g.scan_period, 1.0, 100.0);
+  g.time_increment = 1.0 / config.number({p + "/beam_rate_hz", "Hz",
+                                          "beams measured per second (sets each beam's time, the skew of a "
+                                          "moving scan); the emulator uses the LMS100's 36 kHz"},
+                                         1.0 / g.time_increment, 100.0, 1e6);
+  const long long bits = config.integer({p + "/rssi_bits", "bit",
+                                         "RSSI channel of rendered scans: 16, 8 (16-bit / 257) or 0 (none); "
+                                         "the emulator sends what the driver requests"},
+                                        c.rssi_bits, 0, 16);
   if (bits != 0 && bits != 8 && bits != 16) config.fail(p + "/rssi_bits", "expected 0, 8 or 16");
   c.rssi_bits = static_cast<int>(bits);
   if (g.time_increment * g.num_beams > g.scan_period) {
