@@ -59,7 +59,9 @@ fi
 if [ -n "$range_offset_mm" ]; then
   # The simulated sensor's systematic range offset (robot_sim.json render/sensor/range_offset [m]).
   sim_config="$REFLOC_CONFIG_DIR/robot_sim.json"
-  jq --argjson mm "${range_offset_mm#+}" '.render.sensor.range_offset = ($mm / 1000)' "$sim_config" >"$sim_config.new"
+  # Its // comments stand on lines of their own; jq 1.6 reads no comments, so sed drops them.
+  sed '/^[[:space:]]*\/\//d' "$sim_config" |
+    jq --argjson mm "${range_offset_mm#+}" '.render.sensor.range_offset = ($mm / 1000)' >"$sim_config.new"
   mv "$sim_config.new" "$sim_config"
   echo "== simulated LMS100 range offset: $range_offset_mm mm ($sim_config)"
 fi
@@ -89,7 +91,8 @@ echo "== LCM log: $(ls "$run_dir"/refloc.* 2>/dev/null | tr '\n' ' ')"
 # The path and the errors over time drawn into the run's folder (path.png, path.svg) from the
 # trace refloc-mission wrote; a by-product: without matplotlib (or a trace) the exit code stays.
 config_dir="${REFLOC_CONFIG_DIR:-$root/deploy/config}"
-world_file="$config_dir/$(jq -r '.world_file' "$config_dir/robot_sim.json" 2>/dev/null || echo world_demo.json)"
+world_file="$config_dir/$(sed '/^[[:space:]]*\/\//d' "$config_dir/robot_sim.json" | jq -r '.world_file' 2>/dev/null ||
+  echo world_demo.json)"
 plot_cmd=("$root/tools/refloc-plot/refloc-plot.py" mission --trace "$run_dir/path_trace.csv"
   --world "$world_file" --title "refloc demo mission ($(basename "$run_dir"))")
 if [ -s "$run_dir/path_trace.csv" ] &&

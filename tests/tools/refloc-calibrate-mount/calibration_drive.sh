@@ -26,6 +26,7 @@ fail() { echo "calibration_drive: FAIL: $*" >&2; exit 1; }
 
 # Services: the deployed configs with the nominal mount. robot_sim: the true robot, no per-wheel
 # scale errors (their mean is what the tool measures as the radius; the truth would be unclear).
+# robot_sim.json has // comments on lines of their own, which jq 1.6 cannot read: sed drops them.
 config="$run_dir/config"
 cp -r "$source_dir/deploy/config" "$config"
 jq '.laser_mount = {"x_m": 0.30, "y_m": -0.10, "theta_rad": 0.0}' "$source_dir/deploy/config/robot.json" >"$config/robot.json"
@@ -35,7 +36,7 @@ jq '.laser_mount = {"x_m": 0.35, "y_m": -0.12, "theta_rad": (1.5 * 3.14159265358
 jq --arg seed "$seed" --arg offset "$range_offset_m" '.slip.scale_error = [0, 0, 0, 0]
     | if $seed == "" then . else .slip.seed = ($seed | tonumber) | .emulator.random_seed = ($seed | tonumber) end
     | if $offset == "" then . else .render.sensor.range_offset = ($offset | tonumber) end' \
-  "$source_dir/deploy/config/robot_sim.json" >"$config/robot_sim_calibration.json"
+  <(sed '/^[[:space:]]*\/\//d' "$source_dir/deploy/config/robot_sim.json") >"$config/robot_sim_calibration.json"
 
 export REFLOC_BUILD="$binary_dir"
 export REFLOC_CONFIG_DIR="$config"
