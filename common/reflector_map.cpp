@@ -110,9 +110,9 @@ ReflectorMap parse_reflector_map(const JsonConfig& config, const std::string& po
                      "diameter: 0.06); the matcher's occlusion check and the simulator use it"},
                     0.06, 1e-3, 5.0);
   const std::string list = pointer + "/reflectors";
-  const size_t n = config.array_size(
-      {list, "",
-       "the reflectors [{id, x, y, radius_m}], at least 3, not colinear, at least r1 + r2 + 10 mm apart"});
+  const size_t n = config.array_size({list, "",
+                                      "the reflectors [{id, x, y, radius_m}]: at least 3, centres r1 + r2 + "
+                                      "10 mm apart; all on one line only warns"});
   if (n < 3) config.fail(list, fmt::format("expected at least 3 reflectors, got {}", n));
 
   ReflectorMap map;

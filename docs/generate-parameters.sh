@@ -49,3 +49,15 @@ done
 
 printf '\n## robot.json\n\n%s\n\n' "The robot's geometry, drive limits, laser mount and odometry noise: \`deploy/config/robot.json\`, read by mecanum_odometry, reflector_extractor, reflector_matcher, pose_solver, pose_fusion and robot_sim (\`--robot FILE\`)."
 "$bin/pose_solver" --config "" --robot "" --print-robot-config --print-config-format markdown
+
+# The data files users edit: each reader run on a built-in example that uses every key.
+printf '\n## Data files\n\n%s\n' "Not service configs, but files you write: a reflector map, a simulated world and a mission. \`build/bin/refloc-config-check --print-reference map|world|mission\` prints each table; \`refloc-config-check --map FILE\` validates a map. Array elements are written \`/*/\`: \`/reflectors/*/x\` is \`x\` in every element of \`reflectors\`."
+declare -A data_role=(
+  [map]="The reflector map (\`deploy/config/map_demo.json\`), read by reflector_matcher (\`map_file\` in its config) and by every world file."
+  [world]="A simulated world (\`deploy/config/world_demo.json\`) for robot_sim, lms100_emulator and refloc-eval: walls, obstacles, distractors and map errors around a map."
+  [mission]="A mission for refloc-mission (\`deploy/config/mission_demo.json\`): waypoints in the map frame and how precisely, fast and long to drive them."
+)
+for kind in map world mission; do
+  printf '\n### %s\n\n%s\n\n' "$kind" "${data_role[$kind]}"
+  "$bin/refloc-config-check" --print-reference "$kind"
+done

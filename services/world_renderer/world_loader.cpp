@@ -65,7 +65,9 @@ void read_polylines(const JsonConfig& config, const std::string& list, const std
 }
 
 void read_unmapped_reflectors(const JsonConfig& config, const std::string& list, World& world) {
-  const size_t n = config.array_size(list, false);
+  const size_t n = config.array_size(
+      {list, "", "reflectors in the world but not in the map (a robustness test): [{id, x, y, radius_m}]"},
+      false);
   for (size_t i = 0; i < n; ++i) {
     const std::string item = fmt::format("{}/{}", list, i);
     MapReflector r;

@@ -7,6 +7,7 @@
 #include "common/json_config.hpp"
 #include "common/program_version.hpp"
 #include "config_check.hpp"
+#include "data_file_reference.hpp"
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -36,10 +37,20 @@ int main(int argc, char** argv) {
                  "service config file, SERVICE=FILE or named after its service (reflector_extractor.json); "
                  "may be repeated");
   app.add_flag("--strict", strict, "warnings (colinear map) fail with exit 2");
+  std::string reference_kind;
+  app.add_option("--print-reference", reference_kind,
+                 "print the key reference (Markdown) of a data file and exit")
+      ->check(CLI::IsMember(refloc::data_file_kinds()));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : refloc::kExitUsageError;  // --help/--version: 0
+  }
+  if (!reference_kind.empty()) {
+    return refloc::guarded_main("refloc-config-check", [&] {
+      fmt::print("{}", refloc::data_file_reference_markdown(reference_kind));
+      return 0;
+    });
   }
   if (map_files.empty() && config_files.empty()) {
     std::fprintf(stderr, "refloc-config-check: give at least one --map or --config\n%s", app.help().c_str());

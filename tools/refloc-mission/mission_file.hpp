@@ -23,4 +23,9 @@ struct Mission {
 /// Reads and validates a mission file; throws ConfigError naming file and key.
 Mission load_mission(const std::string& path);
 
+class JsonConfig;
+/// The same on a document already loaded (records every key for the reference); does not call
+/// reject_unknown_keys.
+Mission parse_mission(const JsonConfig& config);
+
 }  // namespace refloc
