@@ -94,7 +94,7 @@ trap cleanup EXIT
 load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 echo "== load test: ${duration} s, build $REFLOC_BUILD, $(nproc) cores, load average $load_before"
 echo "== run dir $run_dir"
-if ! deploy/refloc start "${services[@]}" >/dev/null; then
+if ! deploy/refloc start --sim "${services[@]}" >/dev/null; then
   echo "load_test: not every service started; see $REFLOC_RUN_DIR" >&2
   exit 2
 fi
@@ -157,7 +157,7 @@ while read -r name state _ number _; do
   [ "$state" = RUNNING ] && pid[$name]="${number%,}"
 done < <(ctl status "${services[@]}" || true)
 # The log, and with it the measurement, starts now.
-deploy/refloc start lcm-logger >/dev/null
+deploy/refloc start --sim lcm-logger >/dev/null
 t0=$(date +%s.%N)
 pid[lcm-logger]="$(ctl pid lcm-logger)"
 for p in "${programs[@]}"; do

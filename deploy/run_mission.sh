@@ -1,18 +1,20 @@
 #!/usr/bin/env bash
 # The main job, run inside a private network namespace by deploy/demo.sh:
-# start robot_sim and every service under supervisord (deploy/refloc), record
-# an LCM log, drive the demo mission, print the true arrival error at each
+# start robot_sim and every service under supervisord (deploy/refloc start --sim),
+# record an LCM log, drive the demo mission, print the true arrival error at each
 # waypoint, the localization RMSE and NEES, stop everything.
 #   deploy/run_mission.sh [--build-dir DIR] [--mission FILE] [--json FILE] [--no-motion-compensation]
 #                         [--range-offset-mm N] [--log-dir DIR]
-# --log-dir DIR: the run's logs, LCM log and edited configs (default logs/demo-<time>).
+# --build-dir DIR: holds bin/ (default: the install prefix when run from one, else <repo>/build).
+# --log-dir DIR: the run's logs, LCM log and edited configs (default <root>/logs/demo-<time>).
 # --range-offset-mm N: the simulated LMS100 adds N mm (-1000..1000) to every range (its error
 # model's render/sensor/range_offset in robot_sim.json); pose_solver estimates the bias.
+# Relative paths are the caller's; runs from a checkout or an install (cmake --install).
 set -euo pipefail
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-cd "$root"
-build_dir=build
-mission=deploy/config/mission_demo.json
+root="$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)"
+build_dir="$root/build"
+[ -d "$root/bin" ] && build_dir="$root"
+mission="$root/deploy/config/mission_demo.json"
 json=""
 run_dir=""
 motion_compensation=true
@@ -26,7 +28,7 @@ while [ $# -gt 0 ]; do
     --log-dir) run_dir="$2"; shift 2 ;;
     --no-motion-compensation) motion_compensation=false; shift ;;
     --range-offset-mm) range_offset_given=true; range_offset_mm="${2-}"; shift $(($# > 1 ? 2 : 1)) ;;
-    -h|--help) sed -n '2,11p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
     *) echo "run_mission: unknown argument '$1' (see --help)" >&2; exit 64 ;;
   esac
 done
@@ -39,10 +41,19 @@ if [ "$range_offset_given" = true ]; then
   fi
 fi
 
-[ -n "$run_dir" ] || run_dir="$root/logs/demo-$(date +%Y%m%d-%H%M%S)"
+if [ -z "$run_dir" ]; then
+  # An install under /opt/refloc is not the user's to write: their state directory then.
+  logs="$root/logs"
+  mkdir -p "$logs" 2>/dev/null && [ -w "$logs" ] || logs="${XDG_STATE_HOME:-$HOME/.local/state}/refloc"
+  run_dir="$logs/demo-$(date +%Y%m%d-%H%M%S)"
+fi
 mkdir -p "$run_dir"
 run_dir="$(cd "$run_dir" && pwd)"
-case "$build_dir" in /*) export REFLOC_BUILD="$build_dir" ;; *) export REFLOC_BUILD="$root/$build_dir" ;; esac
+[ -f "$mission" ] || { echo "run_mission: no mission file '$mission'" >&2; exit 2; }
+mission="$(realpath "$mission")"
+[ -d "$build_dir/bin" ] || { echo "run_mission: no $build_dir/bin (build first, or --build-dir)" >&2; exit 2; }
+REFLOC_BUILD="$(realpath "$build_dir")"
+export REFLOC_BUILD
 export REFLOC_LOG_DIR="$run_dir"
 export REFLOC_RUN_DIR="$run_dir/supervisor"
 if [ "$motion_compensation" = false ] || [ -n "$range_offset_mm" ]; then
@@ -66,15 +77,14 @@ if [ -n "$range_offset_mm" ]; then
   echo "== simulated LMS100 range offset: $range_offset_mm mm ($sim_config)"
 fi
 export LCM_DEFAULT_URL="${LCM_DEFAULT_URL:-udpm://239.255.76.67:7667?ttl=0&recv_buf_size=2097152}"
-# The simulator's LMS100 emulator listens on loopback.
-export REFLOC_ARGS_lms100_driver="${REFLOC_ARGS_lms100_driver:---host 127.0.0.1}"
-
-stop_stack() { deploy/refloc stop >/dev/null 2>&1 || true; }
+refloc="$root/deploy/refloc"
+stop_stack() { "$refloc" stop >/dev/null 2>&1 || true; }
 trap stop_stack EXIT
 
 echo "== starting the refloc stack (logs and LCM log in $run_dir)"
-deploy/refloc start >/dev/null
-deploy/refloc status || true
+# --sim: robot_sim runs and the driver dials its emulator on 127.0.0.1.
+"$refloc" start --sim >/dev/null
+"$refloc" status || true
 
 mission_args=(--mission "$mission" --log-file "$run_dir/refloc.0" --trace "$run_dir/path_trace.csv")
 [ -n "$json" ] && mission_args+=(--json "$json")

@@ -62,7 +62,7 @@ for b in "${services[@]}" refloc-mission ops_hostile_peer ops_hostile_log_check;
 done
 command -v supervisord >/dev/null && command -v lcm-logger >/dev/null || fatal "no supervisord/lcm-logger"
 
-"$refloc" start >/dev/null || fatal "deploy/refloc start"
+"$refloc" start --sim >/dev/null || fatal "deploy/refloc start"
 for _ in $(seq 300); do
   missing=0
   start_pids="$(all_pids)"

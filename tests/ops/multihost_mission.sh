@@ -149,7 +149,7 @@ say "starting the stack: a (${programs[a]}), b (${programs[b]}), c (${programs[c
 # Like three computers booting: all at once, in no particular order.
 start_pids=()
 for h in "${hosts[@]}"; do
-  on_host "$h" "$refloc" start >"$tmp/$h/start.out" 2>&1 &
+  on_host "$h" "$refloc" start --sim >"$tmp/$h/start.out" 2>&1 &
   start_pids+=($!)
 done
 for i in "${!hosts[@]}"; do

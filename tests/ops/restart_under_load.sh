@@ -75,7 +75,7 @@ for b in "${victims[@]}" robot_sim refloc-mission; do
 done
 command -v supervisord >/dev/null && command -v lcm-logger >/dev/null || { echo "SKIP: no supervisord/lcm-logger"; exit 77; }
 
-"$refloc" start >/dev/null || fail "deploy/refloc start"
+"$refloc" start --sim >/dev/null || fail "deploy/refloc start"
 for _ in $(seq 300); do
   missing=0
   pids="$(all_pids)"

@@ -70,7 +70,7 @@ socket_queue_bytes() {
 # deploy/refloc status prints "name RUNNING pid N, uptime ..."
 program_pid() { "$refloc" status "$1" 2>/dev/null | awk '$2 == "RUNNING" {p = $4; sub(",", "", p); print p}'; }
 
-"$refloc" start >/dev/null || fail "deploy/refloc start"
+"$refloc" start --sim >/dev/null || fail "deploy/refloc start"
 # Warm: every service beats, the solver has published LASER_POSE and fusion POSE.
 warm=false
 for _ in $(seq 30); do

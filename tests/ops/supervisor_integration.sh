@@ -17,7 +17,10 @@ export REFLOC_BUILD="$tmp/build" REFLOC_RUN_DIR="$tmp/run" REFLOC_LOG_DIR="$tmp/
 export REFLOC_PROGRAMS="lcm-logger robot_sim"
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7667?ttl=0"
 mkdir -p "$REFLOC_BUILD/bin" "$REFLOC_CONFIG_DIR"
-ln -s "$build/bin/lcm_echo_peer" "$REFLOC_BUILD/bin/robot_sim"
+# The stand-in takes only --lcm-url: deploy/refloc exec also passes the shipped robot_sim.json
+# and robot.json (files missing from REFLOC_CONFIG_DIR fall back to the shipped ones).
+printf '#!/bin/sh\nexec "%s" "$1" "$2"\n' "$build/bin/lcm_echo_peer" >"$REFLOC_BUILD/bin/robot_sim"
+chmod +x "$REFLOC_BUILD/bin/robot_sim"
 ln -s "$build/bin/navigator" "$REFLOC_BUILD/bin/navigator"
 ln -s "$build/bin/refloc-logger-watch" "$REFLOC_BUILD/bin/refloc-logger-watch"
 ln -s "$(command -v false)" "$REFLOC_BUILD/bin/mecanum_odometry"
@@ -43,7 +46,7 @@ wait_running() {
 
 help="$("$refloc" --help)"
 grep -q "restart NAME" <<<"$help" || fail "--help"
-"$refloc" start || fail "start"
+"$refloc" start --sim || fail "start"
 [ -S "$REFLOC_RUN_DIR/supervisor.sock" ] || fail "no socket in $REFLOC_RUN_DIR"
 
 status="$("$refloc" status)" || true
@@ -80,7 +83,7 @@ grep -q "started, pid" <<<"$logs" || fail "logs robot_sim"
 # A configuration error is not retried: EXITED (terminal with autorestart=unexpected,
 # exitcodes=2), the reason shown by status.
 echo '{"not json' >"$REFLOC_CONFIG_DIR/navigator.json"
-"$refloc" start navigator >/dev/null || true
+"$refloc" start --sim navigator >/dev/null || true
 # (status exits 3 while a program is not RUNNING: read its output, not its code)
 for _ in $(seq 50); do
   grep -q "EXITED" <<<"$("$refloc" status navigator || true)" && break
@@ -97,7 +100,7 @@ starts="$(grep -c "navigator: error: " "$REFLOC_RUN_DIR/navigator.log")"
 echo "config error: EXITED after one start, status says: $(grep 'not restarted' <<<"$status")"
 
 # Any other quick failure is retried, with a delay growing by 1 s a start.
-"$refloc" start mecanum_odometry >/dev/null || true
+"$refloc" start --sim mecanum_odometry >/dev/null || true
 sleep 4
 retries="$(grep -c "ended within 1 s of its start" "$REFLOC_RUN_DIR/mecanum_odometry.log" || true)"
 [ "$retries" -ge 2 ] || fail "a quick exit 1 was retried $retries times in 4 s: $(cat "$REFLOC_RUN_DIR/mecanum_odometry.log")"

@@ -57,7 +57,7 @@ trap cleanup EXIT
 "$binary_dir/bin/robot_sim" --robot "$run_dir/robot_true.json" --config "$config/robot_sim_calibration.json" \
   >"$run_dir/robot_sim.log" 2>&1 &
 sim_pid=$!
-"$source_dir/deploy/refloc" start >/dev/null
+"$source_dir/deploy/refloc" start --sim >/dev/null
 start_s=$(date +%s)
 set +e
 "$binary_dir/bin/refloc-mission" --mission "$mission" --json "$run_dir/mission.json" \
