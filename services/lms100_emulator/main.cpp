@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
   app.add_option("--startup-status-scans", o.startup_status_scans, "scans with status 1 0 after sEN");
   app.add_flag("--control-stdin", control_stdin, "fault commands from stdin (drop N, stall MS, close, ...)");
   app.add_flag("--no-lcm", no_lcm, "no HEARTBEAT (no LCM needed)");
-  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::parse_emulator_config(f); });
+  cli.set_config_reader([](const refloc::JsonConfig& f) { refloc::read_standalone_config(f); });
   return cli.run(argc, argv,
                  [&] { return refloc::run(cli.config_path, o, control_stdin, no_lcm, cli.lcm_url); });
 }

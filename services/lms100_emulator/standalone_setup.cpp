@@ -60,23 +60,31 @@ Pose2 parse_pose_text(const std::string& text, const std::string& what) {
   return pose;
 }
 
+StandaloneFileKeys read_standalone_config(const JsonConfig& file) {
+  StandaloneFileKeys keys;
+  keys.emulator = parse_emulator_config(file);
+  keys.world_file =
+      file.string({"/world_file", "", "world to render, relative to this file; none: test pattern"}, "");
+  // Read even when --pose wins, so the key is known to reject_unknown_keys().
+  keys.map_T_laser =
+      file.string({"/map_T_laser", "", "static sensor pose in the world as \"x,y,theta\" [m, m, rad]"}, "");
+  keys.render = sim::parse_scan_render_config(file, "/render");
+  return keys;
+}
+
 StandaloneSetup build_standalone_setup(const std::string& config_path, const EmulatorOverrides& o) {
   StandaloneSetup setup;
   setup.world_path = o.world_path;
   std::string pose_text = o.pose;
   if (!config_path.empty()) {
     const JsonConfig file = JsonConfig::load_file(config_path);
-    setup.emulator = parse_emulator_config(file);
-    const std::string world_in_file =
-        file.string({"/world_file", "", "world to render, relative to this file; none: test pattern"}, "");
-    if (setup.world_path.empty() && !world_in_file.empty()) {
-      setup.world_path = (std::filesystem::path(config_path).parent_path() / world_in_file).string();
+    const StandaloneFileKeys keys = read_standalone_config(file);
+    setup.emulator = keys.emulator;
+    if (setup.world_path.empty() && !keys.world_file.empty()) {
+      setup.world_path = (std::filesystem::path(config_path).parent_path() / keys.world_file).string();
     }
-    // Read even when --pose wins, so the key is known to reject_unknown_keys().
-    const std::string pose_in_file =
-        file.string({"/map_T_laser", "", "static sensor pose in the world as \"x,y,theta\" [m, m, rad]"}, "");
-    if (pose_text.empty()) pose_text = pose_in_file;
-    if (file.has("/render")) setup.render = sim::parse_scan_render_config(file, "/render");
+    if (pose_text.empty()) pose_text = keys.map_T_laser;
+    setup.render = keys.render;
     file.reject_unknown_keys();
   }
   apply_overrides(o, setup.emulator);

@@ -44,6 +44,16 @@ struct StandaloneSetup {
 /// "x,y,theta" [m, m, rad]; throws ConfigError naming `what` otherwise.
 Pose2 parse_pose_text(const std::string& text, const std::string& what);
 
+/// What the standalone emulator's config file holds: the emulator keys, world_file, map_T_laser
+/// and render {...}; every key is read (so --print-config lists them), none is interpreted.
+struct StandaloneFileKeys {
+  Lms100EmulatorConfig emulator;
+  std::string world_file;   ///< relative to the file; "" = none
+  std::string map_T_laser;  ///< "x,y,theta"; "" = none
+  sim::ScanRenderConfig render;
+};
+StandaloneFileKeys read_standalone_config(const JsonConfig& file);
+
 /// Reads config_path (none when empty; world_file relative to it), applies the overrides
 /// and checks the combination; throws ConfigError with the file and key or the option.
 StandaloneSetup build_standalone_setup(const std::string& config_path, const EmulatorOverrides& overrides);
