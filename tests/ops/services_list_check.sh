@@ -47,15 +47,24 @@ listed_services="$(printf '%s\n' "${services[@]}" | sort | tr '\n' ' ')"
 [ "$status_default" = "$listed_services" ] ||
   fail "refloc-status's default --expect ($status_default) is not the list's services ($listed_services)"
 
-conf="$("$refloc" supervisor-conf)"
-for p in "${programs[@]}"; do
-  priority="$(awk -v n="$p" '$1 == n {print $2}' "$list")"
-  section="$(awk -v h="[program:$p]" '$0 == h {on = 1; next} /^\[/ {on = 0} on' <<<"$conf")"
-  [ -n "$section" ] || fail "supervisor-conf has no [program:$p]"
-  grep -qxF "priority=$priority" <<<"$section" || fail "[program:$p] lacks priority=$priority"
-  grep -qxF "command=$repo/deploy/refloc exec $p" <<<"$section" || fail "[program:$p] does not run deploy/refloc exec $p"
-done
-[ "$(grep -c '^\[program:' <<<"$conf")" -eq ${#programs[@]} ] || fail "supervisor-conf has extra sections"
+# The robot profile writes a section for every program except the simulation-only ones;
+# --sim writes all of them.
+mapfile -t real_programs < <("$refloc" list --real)
+check_conf() {
+  local conf="$1" label="$2"; shift 2
+  local p priority section
+  for p in "$@"; do
+    priority="$(awk -v n="$p" '$1 == n {print $2}' "$list")"
+    section="$(awk -v h="[program:$p]" '$0 == h {on = 1; next} /^\[/ {on = 0} on' <<<"$conf")"
+    [ -n "$section" ] || fail "supervisor-conf $label has no [program:$p]"
+    grep -qxF "priority=$priority" <<<"$section" || fail "[program:$p] ($label) lacks priority=$priority"
+    grep -qxF "command=$repo/deploy/refloc exec $p" <<<"$section" || fail "[program:$p] ($label) does not run deploy/refloc exec $p"
+  done
+  [ "$(grep -c '^\[program:' <<<"$conf")" -eq $# ] || fail "supervisor-conf $label has extra sections"
+}
+check_conf "$("$refloc" supervisor-conf)" "(robot profile)" "${real_programs[@]}"
+check_conf "$("$refloc" supervisor-conf --sim)" "--sim" "${programs[@]}"
+[ ${#real_programs[@]} -lt ${#programs[@]} ] || fail "list --real drops no simulation-only program"
 
 # A malformed line is an error naming the file and line.
 bad="$(mktemp /tmp/refloc_services_list.XXXXXX)"
@@ -63,4 +72,4 @@ trap 'rm -f "$bad"' EXIT
 printf 'lcm-logger 10 no no -\npose_solver forty no yes -\n' >"$bad"
 if out="$(REFLOC_SERVICES_LIST="$bad" "$refloc" list 2>&1)"; then fail "a malformed list was accepted: $out"; fi
 grep -qF "$bad:2:" <<<"$out" || fail "the error does not name the line: $out"
-echo "PASS: ${#programs[@]} programs (${programs[*]}); robot_json matches --robot; supervisor-conf matches"
+echo "PASS: ${#programs[@]} programs (${programs[*]}); robot_json matches --robot; supervisor-conf matches (robot profile: ${#real_programs[@]}, --sim: ${#programs[@]})"
