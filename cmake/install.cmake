@@ -38,6 +38,10 @@ install(DIRECTORY deploy/systemd/ DESTINATION deploy/systemd)
 # run_mission.sh runs the stack in a private network namespace through this script.
 install(PROGRAMS tests/tools/run_in_netns.sh DESTINATION deploy)
 install(DIRECTORY docs/ DESTINATION docs)
+# run_mission.sh and refloc-eval draw their pictures with it (<root>/tools/refloc-plot).
+install(PROGRAMS tools/refloc-plot/refloc-plot.py DESTINATION tools/refloc-plot)
+install(FILES tools/refloc-plot/refloc_plot_data.py tools/refloc-plot/refloc_plot_draw.py
+              tools/refloc-plot/refloc_plot_studies.py tools/refloc-plot/README.md DESTINATION tools/refloc-plot)
 install(FILES README.md DESTINATION .)
 if(EXISTS ${CMAKE_SOURCE_DIR}/LICENSE)
   install(FILES LICENSE DESTINATION .)

@@ -65,7 +65,10 @@ unset REFLOC_RUN_DIR REFLOC_LOG_DIR
   fail "run_mission.sh from the install: $(tail -20 "$tmp/mission.out")"
 [ -f "$elsewhere/mission.json" ] || fail "no mission.json in the caller's working directory"
 grep -q "waypoints reached: 2/2" "$tmp/mission.out" || fail "the mission did not reach 2/2: $(tail -20 "$tmp/mission.out")"
-echo "mission from the install: $(grep -m1 "waypoints reached" "$tmp/mission.out")"
+if [ -x /usr/bin/python3 ] && /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+  [ -s "$tmp/mission/path.png" ] || fail "no path.png from the install's refloc-plot: $(grep -i plot "$tmp/mission.out")"
+fi
+echo "mission from the install: $(grep -m1 "waypoints reached" "$tmp/mission.out"), picture $(ls "$tmp/mission/path.png" 2>/dev/null || echo none)"
 
 # The Debian package.
 command -v dpkg-deb >/dev/null || { echo "SKIP: no dpkg-deb" >&2; exit 77; }
