@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,28 @@ struct MapReflector {
   int id = 0;
   Eigen::Vector2d map_p_center = Eigen::Vector2d::Zero();  ///< centre in the map frame [m]
   double radius = 0.06;                                    ///< cylinder radius [m]
+  /// Free-form reflector type from the file (e.g. "cylinder_120"); "" when not given.
+  std::string type;
+  /// Covariance of map_p_center from the survey [m^2]; absent for typed or imported
+  /// positions whose accuracy nobody stated.
+  std::optional<Eigen::Matrix2d> map_cov_center;
+};
+
+/// Something the laser cannot see through (a wall, a rack): a polyline in the map frame.
+/// The matcher does not expect a reflector behind one.
+struct MapOccluder {
+  std::string name;
+  std::vector<Eigen::Vector2d> map_points;  ///< at least 2 [m]
+  bool closed = false;                      ///< also the segment last -> first
+};
+
+/// Where a map came from (format v2's header); a v1 file loads with format 1 and the rest empty.
+struct MapInfo {
+  int format = 1;        ///< 1: reflectors only; 2: this header, covariances, occluders
+  std::string map_id;    ///< names the hall/layout; stays the same across versions
+  int version = 0;       ///< increases with every written revision (refloc-map update)
+  std::string created;   ///< ISO 8601 UTC time the file was written
+  std::string source;    ///< "typed", "imported", "surveyed", "updated"
 };
 
 /// Two reflectors closer than r1 + r2 + this [m] are refused: they would touch (or overlap),
@@ -22,7 +45,9 @@ inline constexpr double kMinReflectorGap_m = 0.01;
 inline constexpr double kColinearTolerance_m = 0.05;
 
 struct ReflectorMap {
+  MapInfo info;
   std::vector<MapReflector> reflectors;
+  std::vector<MapOccluder> occluders;
   /// Accepted but doubtful geometry (colinear reflectors), one line each, for the caller to log.
   std::vector<std::string> warnings;
 
@@ -46,5 +71,12 @@ ReflectorMap parse_reflector_map(const JsonConfig& config, const std::string& po
 /// The warning for a map whose reflectors all lie within kColinearTolerance_m of one line,
 /// or "" when the geometry is fine. source names the map in the text.
 std::string colinear_map_warning(const ReflectorMap& map, const std::string& source);
+
+/// The map as the JSON text of a format-2 file (docs/map-format.md): info header, reflectors in
+/// order with their covariance where known, occluders. Loading the text gives the map back.
+std::string reflector_map_v2_text(const ReflectorMap& map);
+/// Writes reflector_map_v2_text to path through a temporary file and a rename, so a reader
+/// never sees half a map; throws std::runtime_error naming the path on failure.
+void write_reflector_map(const ReflectorMap& map, const std::string& path);
 
 }  // namespace refloc
