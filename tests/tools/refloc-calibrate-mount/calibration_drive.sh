@@ -26,13 +26,15 @@ fail() { echo "calibration_drive: FAIL: $*" >&2; exit 1; }
 
 # Services: the deployed configs with the nominal mount. robot_sim: the true robot, no per-wheel
 # scale errors (their mean is what the tool measures as the radius; the truth would be unclear).
-# robot_sim.json has // comments on lines of their own, which jq 1.6 cannot read: sed drops them.
+# robot_sim.json and robot.json have // comments on lines of their own, which jq 1.6 cannot
+# read: sed drops them.
 config="$run_dir/config"
 cp -r "$source_dir/deploy/config" "$config"
-jq '.laser_mount = {"x_m": 0.30, "y_m": -0.10, "theta_rad": 0.0}' "$source_dir/deploy/config/robot.json" >"$config/robot.json"
+robot_json=$(sed '/^[[:space:]]*\/\//d' "$source_dir/deploy/config/robot.json")
+jq '.laser_mount = {"x_m": 0.30, "y_m": -0.10, "theta_rad": 0.0}' <<<"$robot_json" >"$config/robot.json"
 jq '.laser_mount = {"x_m": 0.35, "y_m": -0.12, "theta_rad": (1.5 * 3.141592653589793 / 180)}
     | .wheel_radius_m *= 1.01 | .half_wheelbase_lx_m *= 1.02 | .half_track_ly_m *= 1.02' \
-  "$source_dir/deploy/config/robot.json" >"$run_dir/robot_true.json"
+  <<<"$robot_json" >"$run_dir/robot_true.json"
 jq --arg seed "$seed" --arg offset "$range_offset_m" '.slip.scale_error = [0, 0, 0, 0]
     | if $seed == "" then . else .slip.seed = ($seed | tonumber) | .emulator.random_seed = ($seed | tonumber) end
     | if $offset == "" then . else .render.sensor.range_offset = ($offset | tonumber) end' \
