@@ -30,11 +30,11 @@ struct MapOccluder {
 
 /// Where a map came from (format v2's header); a v1 file loads with format 1 and the rest empty.
 struct MapInfo {
-  int format = 1;        ///< 1: reflectors only; 2: this header, covariances, occluders
-  std::string map_id;    ///< names the hall/layout; stays the same across versions
-  int version = 0;       ///< increases with every written revision (refloc-map update)
-  std::string created;   ///< ISO 8601 UTC time the file was written
-  std::string source;    ///< "typed", "imported", "surveyed", "updated"
+  int format = 1;       ///< 1: reflectors only; 2: this header, covariances, occluders
+  std::string map_id;   ///< names the hall/layout; stays the same across versions
+  int version = 0;      ///< increases with every written revision (refloc-map update)
+  std::string created;  ///< ISO 8601 UTC time the file was written
+  std::string source;   ///< "typed", "imported", "surveyed", "updated"
 };
 
 /// Two reflectors closer than r1 + r2 + this [m] are refused: they would touch (or overlap),
@@ -55,11 +55,14 @@ struct ReflectorMap {
   int index_of(int id) const;
 };
 
-/// Load and validate a map file: {"default_radius_m": 0.06, "reflectors": [{"id", "x", "y",
-/// "radius_m"?}, ...]}. Ids unique, coordinates finite within 100 km, radius in [1 mm, 5 m],
-/// at least 3 reflectors, no two closer than r1 + r2 + kMinReflectorGap_m (checked on a grid:
-/// 100,000 reflectors at one spot are refused at the second one). Colinear maps load with a
-/// warning in ReflectorMap::warnings.
+/// Load and validate a map file (docs/map-format.md). Format 1: {"default_radius_m": 0.06,
+/// "reflectors": [{"id", "x", "y", "radius_m"?}, ...]}. Format 2 ("format": 2) adds the header
+/// (map_id, version, created, source), a reflector's "type" and "covariance_m2" [xx, xy, yy]
+/// (positive definite) and "occluders" [{"name", "points": [[x, y], ...], "closed"?}]; a format-1
+/// file holding any of these is refused. Ids unique, coordinates finite within 100 km, radius in
+/// [1 mm, 5 m], at least 3 reflectors, no two closer than r1 + r2 + kMinReflectorGap_m (checked
+/// on a grid: 100,000 reflectors at one spot are refused at the second one). Colinear maps load
+/// with a warning in ReflectorMap::warnings.
 /// Throws ConfigError naming the file and the JSON pointer of the offending value.
 ReflectorMap load_reflector_map(const std::string& path);
 
@@ -73,10 +76,20 @@ ReflectorMap parse_reflector_map(const JsonConfig& config, const std::string& po
 std::string colinear_map_warning(const ReflectorMap& map, const std::string& source);
 
 /// The map as the JSON text of a format-2 file (docs/map-format.md): info header, reflectors in
-/// order with their covariance where known, occluders. Loading the text gives the map back.
+/// order with their covariance where known, occluders. Loading the text gives the map back (the
+/// same doubles: numbers are written as their shortest round-trip text). map.info.format is
+/// ignored (always 2); an empty map.info.created is written as the current time.
 std::string reflector_map_v2_text(const ReflectorMap& map);
 /// Writes reflector_map_v2_text to path through a temporary file and a rename, so a reader
-/// never sees half a map; throws std::runtime_error naming the path on failure.
+/// never sees half a map. A map the reader would refuse (no map_id, fewer than 3 reflectors...)
+/// is not written: ConfigError naming the path and the key. Throws std::runtime_error naming the
+/// path when the file cannot be written.
 void write_reflector_map(const ReflectorMap& map, const std::string& path);
+
+/// The current time as the map header's "created" holds it: "2026-12-03T06:30:58Z".
+std::string iso8601_utc_now();
+/// Whether text is a time as "created" holds it: ISO 8601 UTC, YYYY-MM-DDTHH:MM:SS[.fraction]Z,
+/// each field in its calendar range.
+bool is_iso8601_utc(const std::string& text);
 
 }  // namespace refloc

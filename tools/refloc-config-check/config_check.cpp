@@ -91,7 +91,19 @@ std::pair<std::string, std::string> split_config_argument(const std::string& arg
 
 FileCheck check_map_file(const std::string& path) {
   const ReflectorMap map = load_reflector_map(path);
-  return FileCheck{fmt::format("ok, {} reflectors", map.reflectors.size()), map.warnings};
+  if (map.info.format == 1) {
+    return FileCheck{fmt::format("ok, {} reflectors, format 1", map.reflectors.size()), map.warnings};
+  }
+  const long with_covariance =
+      std::count_if(map.reflectors.begin(), map.reflectors.end(),
+                    [](const MapReflector& r) { return r.map_cov_center.has_value(); });
+  return FileCheck{
+      fmt::format("ok, {} reflectors ({} with covariance, {} without), {} occluders, format 2, "
+                  "map {} version {}, {}, created {}",
+                  map.reflectors.size(), with_covariance,
+                  static_cast<long>(map.reflectors.size()) - with_covariance, map.occluders.size(),
+                  map.info.map_id, map.info.version, map.info.source, map.info.created),
+      map.warnings};
 }
 
 FileCheck check_config_file(const std::string& service, const std::string& path) {

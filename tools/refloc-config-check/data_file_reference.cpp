@@ -13,8 +13,11 @@ namespace refloc {
 namespace {
 
 // Every key at least once: keys inside array elements are only recorded when an element exists.
-constexpr const char* kMapExample = R"({"default_radius_m": 0.06, "reflectors": [
-  {"id": 1, "x": 0.0, "y": 0.0}, {"id": 2, "x": 5.0, "y": 0.0, "radius_m": 0.05}, {"id": 3, "x": 0.0, "y": 4.0}]})";
+constexpr const char* kMapExample = R"({"format": 2, "map_id": "example_hall", "version": 1,
+  "created": "2026-12-03T06:30:58Z", "source": "surveyed", "default_radius_m": 0.06, "reflectors": [
+  {"id": 1, "x": 0.0, "y": 0.0, "covariance_m2": [4e-6, 0, 4e-6]},
+  {"id": 2, "x": 5.0, "y": 0.0, "radius_m": 0.05, "type": "cylinder_100"}, {"id": 3, "x": 0.0, "y": 4.0}],
+  "occluders": [{"name": "hall", "points": [[-0.1, -0.1], [6, -0.1], [6, 5]], "closed": true}]})";
 
 constexpr const char* kWorldExample = R"({"description": "example", "map_file": "map_demo.json",
   "walls": [{"name": "hall", "points": [[0, 0], [20, 0], [20, 12], [0, 12]], "closed": true, "remission": 0.6}],

@@ -31,12 +31,14 @@ TEST(DataFileReference, EveryKindHasATableWithAMeaningOnEveryRow) {
 TEST(DataFileReference, ShippedDemoFilesUseOnlyKeysOfTheTable) {
   const JsonConfig map = JsonConfig::load_file(kConfigDir + "map_demo.json");
   parse_reflector_map(map);
+  const JsonConfig map_v2 = JsonConfig::load_file(kConfigDir + "map_demo_v2.json");
+  parse_reflector_map(map_v2);
   const JsonConfig world = JsonConfig::load_file(kConfigDir + "world_demo.json");
   sim::parse_world(world, "", kConfigDir);
   const JsonConfig mission = JsonConfig::load_file(kConfigDir + "mission_demo.json");
   parse_mission(mission);
   const std::pair<const JsonConfig*, std::string> files[] = {
-      {&map, "map"}, {&world, "world"}, {&mission, "mission"}};
+      {&map, "map"}, {&map_v2, "map"}, {&world, "world"}, {&mission, "mission"}};
   for (const auto& [file, kind] : files) {
     const std::string table = data_file_reference_markdown(kind);
     ASSERT_FALSE(file->key_records().empty()) << kind;

@@ -52,6 +52,17 @@ TEST(ConfigCheckTool, ABrokenMapAmongGoodOnesExitsTwoNamingIt) {
   EXPECT_THAT(r.output, HasSubstr(bad + ": "));
 }
 
+TEST(ConfigCheckTool, PrintsTheFormatTwoHeaderAndCounts) {
+  const std::string v2 = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/map_demo_v2.json";
+  const std::string v1 = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/map_demo.json";
+  const auto r = testing::run_command(kTool + " --map " + v2 + " --map " + v1);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output,
+              HasSubstr(v2 + ": ok, 24 reflectors (0 with covariance, 24 without), 5 occluders, format "
+                             "2, map demo_hall version 1, typed, created 2026-12-03T07:00:00Z"));
+  EXPECT_THAT(r.output, HasSubstr(v1 + ": ok, 24 reflectors, format 1"));
+}
+
 TEST(ConfigCheckTool, NoMapIsAUsageError) {
   const auto r = testing::run_command(kTool);
   EXPECT_EQ(r.exit_code, 64) << "usage error (exit 2 is reserved for invalid files): " << r.output;
