@@ -7,24 +7,74 @@ namespace refloc {
 FusionServiceConfig parse_fusion_service_config(const JsonConfig& config) {
   FusionServiceConfig c;
   FusionConfig& f = c.fusion;
-  f.history = config.number("/fusion/history_s", f.history, 0.05, 10.0);
-  f.max_fix_lead = config.number("/fusion/max_fix_lead_s", f.max_fix_lead, 0.0, 1.0);
-  f.max_deferred_fixes = static_cast<size_t>(
-      config.integer("/fusion/max_deferred_fixes", static_cast<long long>(f.max_deferred_fixes), 1, 100000));
-  f.gate_chi2 = config.number("/fusion/gate_chi2", f.gate_chi2, 0.1, 1e6);
-  f.degraded_after = config.number("/fusion/degraded_after_s", f.degraded_after, 0.01, 60.0);
-  f.lost_after = config.number("/fusion/lost_after_s", f.lost_after, f.degraded_after, 600.0);
+  f.history =
+      config.number({"/fusion/history_s", "s",
+                     "odometry kept to apply a late fix at its scan's time: fixes older, or further ahead of "
+                     "ODOMETRY, are dropped; longer re-applies more steps (100 Hz) per fix"},
+                    f.history, 0.05, 10.0);
+  f.max_fix_lead =
+      config.number({"/fusion/max_fix_lead_s", "s",
+                     "a fix newer than the latest ODOMETRY by more waits for odometry to reach its "
+                     "time; within it, it corrects the latest estimate (may be gated out moving)"},
+                    f.max_fix_lead, 0.0, 1.0);
+  f.max_deferred_fixes = static_cast<size_t>(config.integer(
+      {"/fusion/max_deferred_fixes", "count",
+       "fixes kept waiting for ODOMETRY to catch up; beyond it the oldest is dropped (100: 2 s of "
+       "fixes at 50 Hz)"},
+      static_cast<long long>(f.max_deferred_fixes), 1, 100000));
+  f.gate_chi2 = config.number({"/fusion/gate_chi2", "",
+                               "a fix farther than this squared Mahalanobis distance from the estimate is "
+                               "rejected (16.27: chi2 3 dof, 99.9 %); lower rejects more good fixes"},
+                              f.gate_chi2, 0.1, 1e6);
+  f.degraded_after =
+      config.number({"/fusion/degraded_after_s", "s",
+                     "no accepted fix for this long: POSE is DEGRADED (the navigator stops unless "
+                     "drive_on_degraded_pose)"},
+                    f.degraded_after, 0.01, 60.0);
+  f.lost_after = config.number({"/fusion/lost_after_s", "s",
+                                "no accepted fix for this long (>= degraded_after_s): LOST; the next OK fix "
+                                "re-initialises the filter without the gate"},
+                               f.lost_after, f.degraded_after, 600.0);
   f.max_consecutive_rejections = static_cast<int>(
-      config.integer("/fusion/max_consecutive_rejections", f.max_consecutive_rejections, 1, 100000));
+      config.integer({"/fusion/max_consecutive_rejections", "count",
+                      "this many gated-out fixes in a row: LOST, re-initialised from the next OK fix; lower "
+                      "recovers sooner from a wrong estimate, trusts wrong fixes sooner"},
+                     f.max_consecutive_rejections, 1, 100000));
   OdometryContinuityConfig& o = c.continuity;
-  o.max_gap = config.number("/continuity/max_gap_s", o.max_gap, 0.01, 60.0);
-  o.max_speed = config.number("/continuity/max_speed_m_s", o.max_speed, 0.01, 10.0);
-  o.max_yaw_rate = config.number("/continuity/max_yaw_rate_rad_s", o.max_yaw_rate, 0.01, 20.0);
-  o.distance_slack = config.number("/continuity/distance_slack_m", o.distance_slack, 0.0, 1.0);
-  c.odometry_timeout = config.number("/odometry_timeout_s", c.odometry_timeout, 0.01, 10.0);
-  c.odometry_channel = config.string("/odometry_channel", c.odometry_channel);
-  c.fix_channel = config.string("/fix_channel", c.fix_channel);
-  c.output_channel = config.string("/output_channel", c.output_channel);
+  o.max_gap = config.number({"/continuity/max_gap_s", "s",
+                             "ODOMETRY messages further apart: a seam (motion unobserved, covariance grown, "
+                             "DEGRADED until a fix); keep >= mecanum_odometry's max_gap_s"},
+                            o.max_gap, 0.01, 60.0);
+  o.max_speed =
+      config.number({"/continuity/max_speed_m_s", "m/s",
+                     "the robot's top speed: sigma per second of a seam; an odometry step longer than "
+                     "2 x this x its gap + 5 cm is refused as a jump. Keep above the real one"},
+                    o.max_speed, 0.01, 10.0);
+  o.max_yaw_rate =
+      config.number({"/continuity/max_yaw_rate_rad_s", "rad/s",
+                     "the robot's top yaw rate: heading sigma per second of a seam; a turn larger than "
+                     "2 x this x its gap + 0.05 rad is refused as a jump"},
+                    o.max_yaw_rate, 0.01, 20.0);
+  o.distance_slack =
+      config.number({"/continuity/distance_slack_m", "m",
+                     "ODOMETRY's travelled distance may go back this much (rounding) before it "
+                     "counts as a restarted odometry (a seam)"},
+                    o.distance_slack, 0.0, 1.0);
+  c.odometry_timeout =
+      config.number({"/odometry_timeout_s", "s",
+                     "no ODOMETRY for this long: each new usable fix is published itself as a "
+                     "DEGRADED POSE; keep well above the ODOMETRY period (10 ms)"},
+                    c.odometry_timeout, 0.01, 10.0);
+  c.odometry_channel =
+      config.string({"/odometry_channel", "",
+                     "LCM channel of the wheel odometry read (odometry_t); POSE is published per message"},
+                    c.odometry_channel);
+  c.fix_channel = config.string(
+      {"/fix_channel", "", "LCM channel of the solver's laser fixes read (pose2d_t)"}, c.fix_channel);
+  c.output_channel =
+      config.string({"/output_channel", "",
+                     "LCM channel the fused pose is published on (pose2d_t, one per ODOMETRY message)"},
+                    c.output_channel);
   for (const char* key : {"/odometry_channel", "/fix_channel", "/output_channel"}) {
     if (config.string(key, "x").empty()) config.fail(key, "expected a channel name, got \"\"");
   }

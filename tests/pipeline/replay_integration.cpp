@@ -71,7 +71,9 @@ struct Inbox {
 /// The deployed pose_solver.json as the sample log was recorded: before the range-bias model
 /// (issue 12; b held at 0 with no sigma). Re-recording the sample drops this.
 std::string solver_config_as_recorded(const std::string& config_dir, const std::string& path) {
-  nlohmann::json j = nlohmann::json::parse(std::ifstream(config_dir + "pose_solver.json"));
+  // The shipped file has // comments (ignore_comments, as JsonConfig reads it).
+  nlohmann::json j =
+      nlohmann::json::parse(std::ifstream(config_dir + "pose_solver.json"), nullptr, true, true);
   j["range_bias_estimate"] = false;
   j["range_bias_prior_sigma_m"] = 0.0;
   std::ofstream(path) << j.dump(2);
