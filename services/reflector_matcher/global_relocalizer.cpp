@@ -17,12 +17,13 @@ constexpr std::array<std::array<int, 3>, 6> kPermutations = {
 GlobalRelocalizer::GlobalRelocalizer(const ReflectorMap& map, const MapGrid& grid,
                                      const MapTriangleIndex& index,
                                      const RelocalizationConfig& relocalization,
-                                     const SensorVisibilityConfig& sensor, int min_matches)
+                                     const SensorVisibilityConfig& sensor, int min_matches,
+                                     const OccluderGrid* occluders)
     : map_(map),
       relocalization_(relocalization),
       min_matches_(min_matches),
       index_(index),
-      verifier_(map, grid, sensor, relocalization) {}
+      verifier_(map, grid, sensor, relocalization, occluders) {}
 
 void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection>& detections) {
   hypotheses_.clear();

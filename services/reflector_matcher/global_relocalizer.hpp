@@ -22,10 +22,10 @@ namespace refloc {
 
 class GlobalRelocalizer {
  public:
-  /// map, grid and index must outlive the relocalizer.
+  /// map, grid, index and occluders (null: none) must outlive the relocalizer.
   GlobalRelocalizer(const ReflectorMap& map, const MapGrid& grid, const MapTriangleIndex& index,
                     const RelocalizationConfig& relocalization, const SensorVisibilityConfig& sensor,
-                    int min_matches);
+                    int min_matches, const OccluderGrid* occluders = nullptr);
 
   /// Fills result (status, matches, scores, map_T_laser; mode = GLOBAL).
   void relocalize(const std::vector<ReflectorDetection>& detections, MatchResult& result);

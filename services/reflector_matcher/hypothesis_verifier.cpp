@@ -8,12 +8,14 @@ namespace refloc {
 
 HypothesisVerifier::HypothesisVerifier(const ReflectorMap& map, const MapGrid& grid,
                                        const SensorVisibilityConfig& sensor,
-                                       const RelocalizationConfig& relocalization)
-    : map_(map), grid_(grid), sensor_(sensor), relocalization_(relocalization) {}
+                                       const RelocalizationConfig& relocalization,
+                                       const OccluderGrid* occluders)
+    : map_(map), grid_(grid), occluders_(occluders), sensor_(sensor), relocalization_(relocalization) {}
 
 int HypothesisVerifier::associate(const Pose2& map_T_laser, const std::vector<ReflectorDetection>& detections,
                                   double gate) {
   predict_reflectors(map_, grid_, map_T_laser, sensor_, gate, scratch_, predicted_);
+  sight_.reset(occluders_, map_T_laser.translation(), predicted_.size());
   const double gate2 = gate * gate;
   candidates_.clear();
   for (size_t k = 0; k < predicted_.size(); ++k) {
@@ -29,7 +31,8 @@ int HypothesisVerifier::associate(const Pose2& map_T_laser, const std::vector<Re
   associations_.clear();
   for (const Candidate& c : candidates_) {
     if (predicted_matched_[static_cast<size_t>(c.predicted_index)] ||
-        detection_used_[static_cast<size_t>(c.detection_index)])
+        detection_used_[static_cast<size_t>(c.detection_index)] ||
+        sight_.hidden(map_, predicted_, static_cast<size_t>(c.predicted_index)))
       continue;
     predicted_matched_[static_cast<size_t>(c.predicted_index)] = 1;
     detection_used_[static_cast<size_t>(c.detection_index)] = 1;
@@ -58,7 +61,7 @@ Verification HypothesisVerifier::verify(const Pose2& map_T_laser,
   for (size_t k = 0; k < predicted_.size(); ++k) {
     if (predicted_[k].in_view && !predicted_matched_[k] &&
         predicted_[k].range <= relocalization_.missed_penalty_max_range &&
-        !is_shadowed(map_, predicted_, k)) {
+        !is_shadowed(map_, predicted_, k) && sight_.clear(map_, predicted_, k)) {
       ++v.missed;
     }
   }

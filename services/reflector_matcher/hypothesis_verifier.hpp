@@ -2,9 +2,13 @@
 // Scores a map_T_laser hypothesis against the whole scan: every map reflector
 // predicted in view is looked for among the detections, so a pose that
 // explains three detections by chance but predicts reflectors nobody saw loses.
+// A reflector the map's occluders hide from the hypothesised laser position is
+// neither a match for a detection nor missed; one they partly hide is no
+// evidence either way when unseen.
 
 #include "reflector_matcher/map_grid.hpp"
 #include "reflector_matcher/matcher_config.hpp"
+#include "reflector_matcher/occluder_grid.hpp"
 #include "reflector_matcher/reflector_visibility.hpp"
 
 #include "common/reflector_detection.hpp"
@@ -25,15 +29,16 @@ struct Verification {
   Pose2 map_T_laser;    ///< the hypothesis refitted to all its associations
   double score = 0.0;   ///< matched - missed_penalty * missed - unexplained_penalty * unexplained
   int matched = 0;      ///< detections explained
-  int missed = 0;       ///< reflectors expected in view, not shadowed, not seen
+  int missed = 0;       ///< reflectors expected in view, not shadowed or occluded, not seen
   int unexplained = 0;  ///< detections no reflector explains
 };
 
 class HypothesisVerifier {
  public:
-  /// map and grid must outlive the verifier; the gates and penalties are relocalization's.
+  /// map, grid and occluders (null: none) must outlive the verifier; the gates and penalties
+  /// are relocalization's.
   HypothesisVerifier(const ReflectorMap& map, const MapGrid& grid, const SensorVisibilityConfig& sensor,
-                     const RelocalizationConfig& relocalization);
+                     const RelocalizationConfig& relocalization, const OccluderGrid* occluders = nullptr);
 
   /// Associate with the coarse gate, refit, associate with the fine gate, score.
   Verification verify(const Pose2& map_T_laser, const std::vector<ReflectorDetection>& detections);
@@ -41,7 +46,8 @@ class HypothesisVerifier {
   /// Associations of the last verify() (fine gate).
   const std::vector<Association>& associations() const { return associations_; }
 
-  /// Unique nearest-neighbour association within gate [m]; returns the number of associations.
+  /// Unique nearest-neighbour association within gate [m] of the reflectors not hidden by an
+  /// occluder; returns the number of associations.
   int associate(const Pose2& map_T_laser, const std::vector<ReflectorDetection>& detections, double gate);
 
  private:
@@ -54,10 +60,12 @@ class HypothesisVerifier {
 
   const ReflectorMap& map_;
   const MapGrid& grid_;
+  const OccluderGrid* occluders_;
   SensorVisibilityConfig sensor_;
   RelocalizationConfig relocalization_;
   std::vector<int> scratch_;
   std::vector<PredictedReflector> predicted_;
+  SightCache sight_;  ///< of predicted_ from the pose of the last associate()
   std::vector<char> predicted_matched_;
   std::vector<char> detection_used_;
   std::vector<Candidate> candidates_;

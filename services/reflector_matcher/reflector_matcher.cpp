@@ -5,7 +5,10 @@
 namespace refloc {
 
 ReflectorMatcher::ReflectorMatcher(ReflectorMap map, const MatcherConfig& config)
-    : map_(std::move(map)), config_(config), grid_(map_, 0.5 * config.sensor.max_range) {
+    : map_(std::move(map)),
+      config_(config),
+      grid_(map_, 0.5 * config.sensor.max_range),
+      occluders_(map_.occluders) {
   if (config_.mode == MatcherMode::kPaper) {
     paper_ = std::make_unique<PaperTriangleMatcher>(
         map_, config_.paper, config_.relocalization.max_triangle_side,
@@ -17,9 +20,9 @@ ReflectorMatcher::ReflectorMatcher(ReflectorMap map, const MatcherConfig& config
       config_.relocalization.max_triangle_side,
       static_cast<size_t>(config_.relocalization.max_index_triangles));
   relocalizer_ = std::make_unique<GlobalRelocalizer>(map_, grid_, *index_, config_.relocalization,
-                                                     config_.sensor, config_.min_matches);
+                                                     config_.sensor, config_.min_matches, &occluders_);
   tracker_ = std::make_unique<TrackingAssociator>(map_, grid_, config_.tracking, config_.sensor,
-                                                  config_.relocalization, config_.min_matches);
+                                                  config_.relocalization, config_.min_matches, &occluders_);
 }
 
 size_t ReflectorMatcher::indexed_triangles() const {

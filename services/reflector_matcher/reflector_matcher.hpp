@@ -9,6 +9,7 @@
 #include "reflector_matcher/map_triangle_index.hpp"
 #include "reflector_matcher/match_result.hpp"
 #include "reflector_matcher/matcher_config.hpp"
+#include "reflector_matcher/occluder_grid.hpp"
 #include "reflector_matcher/paper_triangle_matcher.hpp"
 #include "reflector_matcher/tracking_associator.hpp"
 
@@ -22,7 +23,8 @@ namespace refloc {
 
 class ReflectorMatcher {
  public:
-  /// Builds the map's spatial grid and triangle index (or the paper's signature list) once.
+  /// Builds the map's spatial grid, occluder grid and triangle index (or the paper's signature
+  /// list) once.
   ReflectorMatcher(ReflectorMap map, const MatcherConfig& config);
   ReflectorMatcher(const ReflectorMatcher&) = delete;
   ReflectorMatcher& operator=(const ReflectorMatcher&) = delete;
@@ -39,6 +41,7 @@ class ReflectorMatcher {
   ReflectorMap map_;
   MatcherConfig config_;
   MapGrid grid_;
+  OccluderGrid occluders_;  ///< the map's walls and racks; the paper mode ignores them
   std::unique_ptr<MapTriangleIndex> index_;
   std::unique_ptr<GlobalRelocalizer> relocalizer_;
   std::unique_ptr<TrackingAssociator> tracker_;

@@ -41,4 +41,54 @@ bool is_shadowed(const ReflectorMap& map, const std::vector<PredictedReflector>&
   return false;
 }
 
+bool sight_beam_blocked(const OccluderGrid& occluders, const Eigen::Vector2d& map_p_laser,
+                        const MapReflector& reflector, int b) {
+  const Eigen::Vector2d to_center = reflector.map_p_center - map_p_laser;
+  const double range = to_center.norm();
+  if (range <= reflector.radius) return false;  // inside it: min_range rules it out anyway
+  const Eigen::Vector2d along = to_center / range;
+  const Eigen::Vector2d across(-along.y(), along.x());
+  // Where a beam parallel to the line of sight, side metres off it, meets the cylinder.
+  const double side = (b == 0 ? 0.0 : (b == 1 ? -kSightEdgeFraction : kSightEdgeFraction)) * reflector.radius;
+  const Eigen::Vector2d map_p_hit = reflector.map_p_center + side * across -
+                                    std::sqrt(reflector.radius * reflector.radius - side * side) * along;
+  return occluders.blocks(map_p_laser, map_p_hit);
+}
+
+LineOfSight line_of_sight(const OccluderGrid& occluders, const Eigen::Vector2d& map_p_laser,
+                          const MapReflector& reflector) {
+  int blocked = 0;
+  for (int b = 0; b < 3; ++b) blocked += sight_beam_blocked(occluders, map_p_laser, reflector, b);
+  return blocked == 0 ? LineOfSight::kClear : (blocked == 3 ? LineOfSight::kBlocked : LineOfSight::kPartial);
+}
+
+void SightCache::reset(const OccluderGrid* occluders, const Eigen::Vector2d& map_p_laser,
+                       size_t predicted_count) {
+  occluders_ = occluders != nullptr && !occluders->empty() ? occluders : nullptr;
+  map_p_laser_ = map_p_laser;
+  if (occluders_ != nullptr) state_.assign(predicted_count, 0);
+}
+
+bool SightCache::beam_blocked(const ReflectorMap& map, const std::vector<PredictedReflector>& predicted,
+                              size_t k, int b) {
+  const auto tested = static_cast<unsigned char>(1u << b), blocked = static_cast<unsigned char>(8u << b);
+  if (!(state_[k] & tested)) {
+    const MapReflector& r = map.reflectors[static_cast<size_t>(predicted[k].map_index)];
+    state_[k] |= tested;
+    if (sight_beam_blocked(*occluders_, map_p_laser_, r, b)) state_[k] |= blocked;
+  }
+  return (state_[k] & blocked) != 0;
+}
+
+bool SightCache::hidden(const ReflectorMap& map, const std::vector<PredictedReflector>& predicted, size_t k) {
+  return occluders_ != nullptr && beam_blocked(map, predicted, k, 0) && beam_blocked(map, predicted, k, 1) &&
+         beam_blocked(map, predicted, k, 2);
+}
+
+bool SightCache::clear(const ReflectorMap& map, const std::vector<PredictedReflector>& predicted, size_t k) {
+  return occluders_ == nullptr ||
+         (!beam_blocked(map, predicted, k, 0) && !beam_blocked(map, predicted, k, 1) &&
+          !beam_blocked(map, predicted, k, 2));
+}
+
 }  // namespace refloc

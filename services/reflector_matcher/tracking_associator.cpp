@@ -12,13 +12,15 @@ namespace refloc {
 
 TrackingAssociator::TrackingAssociator(const ReflectorMap& map, const MapGrid& grid,
                                        const TrackingConfig& tracking, const SensorVisibilityConfig& sensor,
-                                       const RelocalizationConfig& relocalization, int min_matches)
+                                       const RelocalizationConfig& relocalization, int min_matches,
+                                       const OccluderGrid* occluders)
     : map_(map),
       grid_(grid),
+      occluders_(occluders),
       tracking_(tracking),
       sensor_(sensor),
       min_matches_(min_matches),
-      refit_verifier_(map, grid, sensor, relocalization) {}
+      refit_verifier_(map, grid, sensor, relocalization, occluders) {}
 
 bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detections, const PosePrior& prior,
                                    MatchResult& result) {
@@ -41,6 +43,7 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
   const double margin = 3.0 * std::sqrt(std::max(prior_cov(0, 0), prior_cov(1, 1))) +
                         3.0 * std::sqrt(prior_cov(2, 2)) * sensor_.max_range;
   predict_reflectors(map_, grid_, prior.map_T_laser, sensor_, margin, scratch_, predicted_);
+  sight_.reset(occluders_, prior.map_T_laser.translation(), predicted_.size());
 
   const double c = std::cos(prior.map_T_laser.theta), s = std::sin(prior.map_T_laser.theta);
   Eigen::Matrix2d laser_R_map_derivative;  // d(R^T)/d theta
@@ -73,7 +76,7 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
   RigidFit2d fit;
   for (const Candidate& cand : candidates_) {
     const auto k = static_cast<size_t>(cand.predicted_index), d = static_cast<size_t>(cand.detection_index);
-    if (predicted_used_[k] || detection_used_[d]) continue;
+    if (predicted_used_[k] || detection_used_[d] || sight_.hidden(map_, predicted_, k)) continue;
     predicted_used_[k] = detection_used_[d] = 1;
     fit.add(detections[d].laser_p_center,
             map_.reflectors[static_cast<size_t>(predicted_[k].map_index)].map_p_center);

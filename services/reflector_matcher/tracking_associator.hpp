@@ -5,7 +5,8 @@
 // the heading) to the detection's covariance; pairs are unique. The pose is then
 // refitted to those pairs and the association repeated with the verifier's
 // coarse-then-fine Euclidean gates, so a prior 0.2 m / 3 deg off still gives
-// the right pairs at 20 m.
+// the right pairs at 20 m. A reflector the map's occluders hide from the prior's
+// position takes no detection.
 
 #include "reflector_matcher/hypothesis_verifier.hpp"
 #include "reflector_matcher/map_grid.hpp"
@@ -22,10 +23,11 @@ namespace refloc {
 
 class TrackingAssociator {
  public:
-  /// map and grid must outlive the associator; relocalization's gates verify the association.
+  /// map, grid and occluders (null: none) must outlive the associator; relocalization's gates
+  /// verify the association.
   TrackingAssociator(const ReflectorMap& map, const MapGrid& grid, const TrackingConfig& tracking,
                      const SensorVisibilityConfig& sensor, const RelocalizationConfig& relocalization,
-                     int min_matches);
+                     int min_matches, const OccluderGrid* occluders = nullptr);
 
   /// Fills result (mode TRACKING); returns false (status LOST) when fewer than
   /// min_matches detections could be associated, so the caller can relocalize.
@@ -41,12 +43,14 @@ class TrackingAssociator {
 
   const ReflectorMap& map_;
   const MapGrid& grid_;
+  const OccluderGrid* occluders_;
   TrackingConfig tracking_;
   SensorVisibilityConfig sensor_;
   int min_matches_;
   HypothesisVerifier refit_verifier_;
   std::vector<int> scratch_;
   std::vector<PredictedReflector> predicted_;
+  SightCache sight_;  ///< of predicted_ from the prior's position
   std::vector<Candidate> candidates_;
   std::vector<char> predicted_used_;
   std::vector<char> detection_used_;

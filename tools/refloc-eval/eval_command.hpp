@@ -12,6 +12,11 @@ namespace refloc {
 /// The command line of refloc-eval.
 struct EvalOptions {
   std::string world_file;
+  /// The map the localization loads; empty: the world's own map file.
+  std::string map_file;
+  /// The matcher's occluders: "map" (the map file's, none in a v1 file), "world" (the world's
+  /// walls and obstacles, sim::world_occluders), "none".
+  std::string occluders = "map";
   std::string robot_file = "deploy/config/robot.json";
   std::string extractor_file = "deploy/config/reflector_extractor.json";
   std::string matcher_file = "deploy/config/reflector_matcher.json";
