@@ -1,0 +1,169 @@
+#include "drive_bundle_adjustment.hpp"
+
+#include "drive_bundle_residuals.hpp"
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+namespace refloc {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+class Bundle {
+ public:
+  Bundle(const BundleProblem& p, const BundleOptions& o) : p_(p), o_(o) {
+    poses_.reserve(p.map_T_robot.size());
+    for (const Pose2& x : p.map_T_robot) poses_.push_back({x.x, x.y, x.theta});
+    landmarks_.reserve(p.map_p_landmark.size());
+    for (const Eigen::Vector2d& m : p.map_p_landmark) landmarks_.push_back({m.x(), m.y()});
+    for (const BundleAnchor& a : p.anchors)
+      landmarks_[static_cast<size_t>(a.landmark)] = {a.map_p.x(), a.map_p.y()};
+  }
+
+  void build() {
+    for (const BundleObservation& z : p_.observations) {
+      auto* f =
+          new ceres::AutoDiffCostFunction<PointResidual, 2, 3, 2, 1>(new PointResidual(point_residual(z)));
+      problem_.AddResidualBlock(f, new ceres::HuberLoss(o_.huber_scale), pose(z.pose), landmark(z.landmark),
+                                &bias_);
+    }
+    for (size_t k = 1; k < poses_.size(); ++k) {
+      const Pose2 measured = p_.odom_T_robot[k - 1].inverse() * p_.odom_T_robot[k];
+      Eigen::Matrix3d covariance = increment_covariance(measured, p_.odometry_noise);
+      covariance.diagonal() += Eigen::Vector3d(o_.odometry_min_sigma_m * o_.odometry_min_sigma_m,
+                                               o_.odometry_min_sigma_m * o_.odometry_min_sigma_m,
+                                               o_.odometry_min_sigma_rad * o_.odometry_min_sigma_rad);
+      auto* f = new ceres::AutoDiffCostFunction<OdometryResidual, 3, 3, 3>(
+          new OdometryResidual{measured, whitening_of<3>(covariance)});
+      problem_.AddResidualBlock(f, nullptr, poses_[k - 1].data(), poses_[k].data());
+    }
+    if (problem_.HasParameterBlock(&bias_) && !o_.estimate_range_bias)
+      problem_.SetParameterBlockConstant(&bias_);
+    if (p_.anchors.empty()) {
+      if (!poses_.empty() && problem_.HasParameterBlock(poses_.front().data()))
+        problem_.SetParameterBlockConstant(poses_.front().data());
+    } else {
+      for (const BundleAnchor& a : p_.anchors)
+        if (problem_.HasParameterBlock(landmark(a.landmark)))
+          problem_.SetParameterBlockConstant(landmark(a.landmark));
+    }
+  }
+
+  BundleResult solve() {
+    BundleResult r;
+    ceres::Solver::Options options;
+    options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    options.max_num_iterations = o_.max_iterations;
+    options.num_threads = o_.threads;
+    options.function_tolerance = 1e-10;
+    options.parameter_tolerance = 1e-10;
+    ceres::Solver::Summary summary;
+    const auto start = std::chrono::steady_clock::now();
+    ceres::Solve(options, &problem_, &summary);
+    r.solve_s = seconds_since(start);
+    r.message = summary.BriefReport();
+    r.iterations = static_cast<int>(summary.iterations.size());
+    r.ok = summary.IsSolutionUsable();
+    if (!r.ok) return r;
+    ceres::Problem::EvaluateOptions plain;
+    plain.apply_loss_function = false;
+    double cost = 0.0;
+    problem_.Evaluate(plain, &cost, nullptr, nullptr, nullptr);
+    const int dof = summary.num_residuals_reduced - summary.num_effective_parameters_reduced;
+    r.chi2_per_dof = dof > 0 ? 2.0 * cost / dof : 0.0;
+    r.range_bias = bias_;
+    for (const auto& x : poses_) r.map_T_robot.push_back({x[0], x[1], x[2]});
+    landmark_statistics(r);
+    if (o_.compute_covariance) covariance(r);
+    return r;
+  }
+
+ private:
+  double* pose(int i) { return poses_[static_cast<size_t>(i)].data(); }
+  double* landmark(int i) { return landmarks_[static_cast<size_t>(i)].data(); }
+
+  PointResidual point_residual(const BundleObservation& z) const {
+    Eigen::Matrix2d covariance = z.covariance;
+    covariance.diagonal().array() += o_.detection_min_sigma * o_.detection_min_sigma;
+    return {z.laser_p, z.laser_p.normalized(), whitening_of<2>(covariance), p_.robot_T_laser};
+  }
+
+  void landmark_statistics(BundleResult& r) const {
+    r.landmarks.resize(landmarks_.size());
+    std::vector<double> sum_e2(landmarks_.size(), 0.0), sum_n2(landmarks_.size(), 0.0);
+    for (const BundleObservation& z : p_.observations) {
+      const auto j = static_cast<size_t>(z.landmark);
+      const PointResidual f = point_residual(z);
+      double e[2], n[2];
+      f.error(poses_[static_cast<size_t>(z.pose)].data(), landmarks_[j].data(), &bias_, e);
+      f(poses_[static_cast<size_t>(z.pose)].data(), landmarks_[j].data(), &bias_, n);
+      r.residuals.emplace_back(e[0], e[1]);
+      const double n2 = n[0] * n[0] + n[1] * n[1];
+      sum_e2[j] += e[0] * e[0] + e[1] * e[1];
+      sum_n2[j] += n2;
+      ++r.landmarks[j].observations;
+      if (n2 > o_.huber_scale * o_.huber_scale) ++r.landmarks[j].outliers;
+    }
+    for (size_t j = 0; j < landmarks_.size(); ++j) {
+      BundleLandmark& l = r.landmarks[j];
+      l.map_p = {landmarks_[j][0], landmarks_[j][1]};
+      if (l.observations == 0) continue;
+      l.residual_rms = std::sqrt(sum_e2[j] / l.observations);
+      l.normalised_rms = std::sqrt(sum_n2[j] / l.observations);
+    }
+  }
+
+  void covariance(BundleResult& r) {
+    const auto start = std::chrono::steady_clock::now();
+    ceres::Covariance::Options options;
+    options.num_threads = o_.threads;
+    ceres::Covariance covariance(options);
+    std::vector<std::pair<const double*, const double*>> blocks;
+    for (auto& l : landmarks_)
+      if (problem_.HasParameterBlock(l.data()) && !problem_.IsParameterBlockConstant(l.data()))
+        blocks.emplace_back(l.data(), l.data());
+    const bool bias_free = problem_.HasParameterBlock(&bias_) && !problem_.IsParameterBlockConstant(&bias_);
+    if (bias_free) blocks.emplace_back(&bias_, &bias_);
+    if (!covariance.Compute(blocks, &problem_)) {
+      r.message += "; covariance not computable (rank deficient: a landmark or the frame is unobserved)";
+      r.covariance_s = seconds_since(start);
+      return;
+    }
+    for (size_t j = 0; j < landmarks_.size(); ++j) {
+      if (!problem_.HasParameterBlock(landmarks_[j].data()) ||
+          problem_.IsParameterBlockConstant(landmarks_[j].data()))
+        continue;
+      double c[4];
+      covariance.GetCovarianceBlock(landmarks_[j].data(), landmarks_[j].data(), c);
+      r.landmarks[j].covariance << c[0], c[1], c[2], c[3];
+    }
+    if (bias_free) {
+      double c = 0.0;
+      covariance.GetCovarianceBlock(&bias_, &bias_, &c);
+      r.range_bias_sigma = std::sqrt(std::max(0.0, c));
+    }
+    r.covariance_s = seconds_since(start);
+  }
+
+  const BundleProblem& p_;
+  BundleOptions o_;
+  std::vector<std::array<double, 3>> poses_;
+  std::vector<std::array<double, 2>> landmarks_;
+  double bias_ = 0.0;
+  ceres::Problem problem_;
+};
+
+}  // namespace
+
+BundleResult adjust_bundle(const BundleProblem& problem, const BundleOptions& options) {
+  Bundle bundle(problem, options);
+  bundle.build();
+  return bundle.solve();
+}
+
+}  // namespace refloc

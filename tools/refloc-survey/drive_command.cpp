@@ -1,0 +1,138 @@
+#include "drive_command.hpp"
+
+#include "drive_anchors.hpp"
+#include "drive_log.hpp"
+#include "drive_map_comparison.hpp"
+#include "drive_report.hpp"
+#include "drive_survey.hpp"
+
+#include "common/guarded_main.hpp"
+#include "common/json_config.hpp"
+#include "common/program_version.hpp"
+#include "common/robot_config.hpp"
+#include "reflector_extractor/extractor_config_file.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <fstream>
+
+namespace refloc {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<DriveScan> read_scans(const DriveCommandOptions& o, const ExtractorServiceConfig& extractor,
+                                  const Pose2& robot_T_laser) {
+  DriveScanCounts counts;
+  DriveLogCounts log_counts;
+  std::vector<DriveScan> scans = read_drive_log(o.log_path, extractor, robot_T_laser, {}, counts, log_counts);
+  fmt::print(
+      "{}: {} events; {} {} ({} refused by the extractor, {} without odometry), {} {}, {} undecodable; "
+      "{} detections\n",
+      o.log_path, log_counts.events, counts.scans, extractor.input_channel, counts.scans_rejected,
+      counts.scans_without_odometry, counts.odometry, extractor.odometry_channel, log_counts.undecodable,
+      counts.detections);
+  if (scans.size() < 2)
+    throw ConfigError(fmt::format("{}: {} usable scans with odometry ({} on {}, {} on {}): nothing to survey",
+                                  o.log_path, scans.size(), counts.scans, extractor.input_channel,
+                                  counts.odometry, extractor.odometry_channel));
+  return scans;
+}
+
+/// Simulation: the map against the true one, printed and, with a report folder, written for the picture.
+void compare_with_truth(const DriveCommandOptions& o, const ReflectorMap& map) {
+  const MapComparison c = compare_maps(map, load_reflector_map(o.truth_path));
+  fmt::print("against {} (after a rigid alignment):\n{}", o.truth_path, comparison_text(c));
+  if (o.report_dir.empty()) return;
+  std::ofstream out(o.report_dir + "/comparison.csv");
+  out << comparison_csv(c);
+  if (!out) throw ConfigError(o.report_dir + "/comparison.csv: cannot write");
+}
+
+}  // namespace
+
+CLI::App* add_drive_command(CLI::App& app, DriveCommandOptions& o) {
+  o.robot_path = shipped_path(o.robot_path);
+  o.extractor_path = shipped_path(o.extractor_path);
+  CLI::App* c =
+      app.add_subcommand("drive", "survey a hall from an LCM log of a drive (LMS100_SCAN, ODOMETRY)");
+  c->add_option("--log", o.log_path, "LCM log of the drive")->required();
+  c->add_option("--out", o.out_path, "the map file to write (format 2)")->required();
+  c->add_option("--robot", o.robot_path, "robot file (laser mount, odometry noise)")->capture_default_str();
+  c->add_option("--extractor-config", o.extractor_path, "reflector_extractor's config, as the service ran")
+      ->capture_default_str();
+  c->add_option("--start-pose", o.start_pose,
+                "x_m,y_m,theta_rad of the robot at the first scan: the map frame")
+      ->delimiter(',')
+      ->expected(3);
+  c->add_option("--anchors", o.anchors_path,
+                "JSON file of 2+ reflectors with known map coordinates (fixes the frame)");
+  c->add_option("--report", o.report_dir, "folder for the report's files and picture (survey.png)");
+  c->add_option("--truth", o.truth_path, "simulation: the true map, compared and drawn");
+  c->add_option("--map-id", o.map_id, "the map's id in its header")->capture_default_str();
+  c->add_flag("!--no-range-bias", o.estimate_range_bias,
+              "hold the LMS100's range bias at 0 instead of estimating it");
+  return c;
+}
+
+int run_drive_command(const DriveCommandOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const RobotConfig robot = load_robot_config(o.robot_path);
+  const ExtractorServiceConfig extractor = load_extractor_service_config(o.extractor_path);
+  const std::vector<SurveyAnchor> anchors =
+      o.anchors_path.empty() ? std::vector<SurveyAnchor>{} : load_survey_anchors(o.anchors_path);
+  const std::vector<DriveScan> scans = read_scans(o, extractor, robot.robot_T_laser);
+  const double read_s = seconds_since(start);
+
+  DriveSurveyConfig config;
+  config.bundle.estimate_range_bias = o.estimate_range_bias;
+  const Pose2 start_pose{o.start_pose[0], o.start_pose[1], o.start_pose[2]};
+  const DriveSurveyResult survey =
+      run_drive_survey(scans, robot.robot_T_laser, robot.odometry_noise, start_pose, anchors, config);
+  const ReflectorMap map =
+      surveyed_map(survey, survey.occluders, o.map_id, extractor.extractor.reflector_radius);
+  write_reflector_map(map, o.out_path);
+  fmt::print("{}", survey_report_text(survey));
+  fmt::print("{} occluders traced; log read and extracted in {:.2f} s; total {:.2f} s\n",
+             survey.occluders.size(), read_s, seconds_since(start));
+  fmt::print("map written: {}\n", o.out_path);
+  if (!o.report_dir.empty()) write_survey_report(o.report_dir, survey, map);
+  if (!o.truth_path.empty()) compare_with_truth(o, map);
+  if (!o.report_dir.empty()) {
+    const int plot = draw_survey_report(o.report_dir, o.truth_path);
+    if (plot == 0)
+      fmt::print("report: {}/report.txt, picture {}/survey.png\n", o.report_dir, o.report_dir);
+    else
+      fmt::print(stderr, "refloc-survey: no picture (survey_drive_plot.py exit {})\n", plot);
+  }
+  return 0;
+}
+
+CLI::App* add_compare_command(CLI::App& app, CompareCommandOptions& o) {
+  CLI::App* c = app.add_subcommand("compare", "a map against the true one: errors after a rigid alignment");
+  c->add_option("--map", o.map_path, "the map to judge (e.g. a surveyed one)")->required();
+  c->add_option("--truth", o.truth_path, "the true map (the world's map, a total-station survey)")
+      ->required();
+  c->add_option("--match-gate-m", o.match_gate_m, "an entry farther from every true reflector is extra")
+      ->check(CLI::Range(0.001, 10.0))
+      ->capture_default_str();
+  c->add_flag("!--no-align", o.align, "compare in the frames as given (a map surveyed with anchors)");
+  return c;
+}
+
+int run_compare_command(const CompareCommandOptions& o) {
+  const ReflectorMap map = load_reflector_map(o.map_path);
+  const ReflectorMap truth = load_reflector_map(o.truth_path);
+  MapComparisonOptions options;
+  options.align = o.align;
+  options.match_gate = o.match_gate_m;
+  const MapComparison c = compare_maps(map, truth, options);
+  fmt::print("{} ({} reflectors) against {} ({}):\n{}", o.map_path, map.reflectors.size(), o.truth_path,
+             truth.reflectors.size(), comparison_text(c));
+  return c.aligned ? 0 : kExitRuntimeFailure;
+}
+
+}  // namespace refloc

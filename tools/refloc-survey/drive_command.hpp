@@ -1,0 +1,39 @@
+#pragma once
+// refloc-survey drive and refloc-survey compare: their options and what they run (main.cpp
+// only dispatches).
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace refloc {
+
+struct DriveCommandOptions {
+  std::string log_path;
+  std::string robot_path = "deploy/config/robot.json";
+  std::string extractor_path = "deploy/config/reflector_extractor.json";
+  std::string out_path;
+  std::string anchors_path;
+  std::string report_dir;
+  std::string truth_path;  ///< simulation: drawn in the picture and compared (refloc-survey compare)
+  std::string map_id = "surveyed";
+  std::vector<double> start_pose = {0.0, 0.0, 0.0};  ///< x_m, y_m, theta_rad
+  bool estimate_range_bias = true;
+};
+
+struct CompareCommandOptions {
+  std::string map_path;
+  std::string truth_path;
+  bool align = true;
+  double match_gate_m = 0.1;
+};
+
+/// Adds the subcommand "drive" filling o; shipped default paths resolved.
+CLI::App* add_drive_command(CLI::App& app, DriveCommandOptions& o);
+int run_drive_command(const DriveCommandOptions& o);
+
+CLI::App* add_compare_command(CLI::App& app, CompareCommandOptions& o);
+int run_compare_command(const CompareCommandOptions& o);
+
+}  // namespace refloc

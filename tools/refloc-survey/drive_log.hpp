@@ -1,0 +1,24 @@
+#pragma once
+// Reads a survey drive from an LCM log into DriveScans: the one place the driving survey
+// decodes lcmtypes. Scans and odometry go to DriveScanBuilder in log order, the order in
+// which the reflector_extractor service would have received them.
+
+#include "drive_scan.hpp"
+
+#include <cstdint>
+#include <string>
+
+namespace refloc {
+
+struct DriveLogCounts {
+  int64_t events = 0;       ///< events in the log
+  int64_t undecodable = 0;  ///< scan or odometry events refused by the bounded decode
+};
+
+/// Channels are the extractor config's input_channel (scans) and odometry_channel.
+/// Throws ConfigError when the file is not an LCM log.
+std::vector<DriveScan> read_drive_log(const std::string& path, const ExtractorServiceConfig& extractor,
+                                      const Pose2& robot_T_laser, const DriveScanOptions& options,
+                                      DriveScanCounts& scan_counts, DriveLogCounts& log_counts);
+
+}  // namespace refloc
