@@ -66,6 +66,8 @@ ModeSummary summarize(const std::vector<Measurement>& all, PipelineMode mode, si
     detected_visible += m.detected_visible;
     detections += m.detections;
     false_detections += m.false_detections;
+    s.match_ok += m.match_status == MatchStatus::kOk;
+    s.match_ok_wrong += m.match_wrong;
     if (!m.published_ok) continue;
     ++s.published_ok;
     if (m.wrong) {
@@ -210,6 +212,13 @@ StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Po
         }
         m.wrong =
             m.published_ok && !approx_equal(m.estimate, m.truth, config.wrong_distance, config.wrong_angle);
+        for (const ReflectorMatch& match : out.match->result.matches) {
+          const auto d = static_cast<size_t>(match.detection_index);
+          m.match_wrong = m.match_wrong ||
+                          (m.match_status == MatchStatus::kOk && d < out.detections().size() &&
+                           (map_T_laser * out.detections()[d].laser_p_center - match.map_p_center).norm() >
+                               config.wrong_distance);
+        }
         score_detections(world, map_T_laser, renderer.truth(), out.detections(),
                          config.detection_match_distance, m);
         result.measurements.push_back(m);
@@ -228,6 +237,8 @@ nlohmann::json to_json(const ModeSummary& s) {
                       {"measurements", s.measurements},
                       {"published_ok", s.published_ok},
                       {"wrong_matches", s.wrong_matches},
+                      {"match_ok", s.match_ok},
+                      {"match_ok_wrong", s.match_ok_wrong},
                       {"mean_max_err_x_mm", s.mean_max_err_x_mm},
                       {"mean_max_err_y_mm", s.mean_max_err_y_mm},
                       {"rmse_mm", s.rmse_mm},
@@ -248,15 +259,15 @@ std::string measurements_csv(const std::vector<Measurement>& measurements) {
       "mode,pose_index,repeat,true_x_m,true_y_m,true_theta_rad,published_ok,match_status,solve_status,wrong,"
       "est_x_m,est_y_m,est_theta_rad,"
       "err_x_mm,err_y_mm,reflectors_used,crlb_rmse_mm,visible_reflectors,detected_visible,detections,"
-      "false_detections,fix_ok,nees_xy,nees_theta\n";
+      "false_detections,fix_ok,nees_xy,nees_theta,match_wrong\n";
   for (const auto& m : measurements) {
     // NEES columns stay empty without a pose or a usable covariance.
     const auto nees_xy = position_nees({m.estimate.x - m.truth.x, m.estimate.y - m.truth.y},
                                        m.covariance.topLeftCorner<2, 2>());
     const auto nees_theta = heading_nees(angle_diff(m.estimate.theta, m.truth.theta), m.covariance(2, 2));
     const std::string nees = fmt::format(
-        "{},{},{}", m.fix_ok ? 1 : 0, m.published_ok && nees_xy ? fmt::format("{:.4f}", *nees_xy) : "",
-        m.published_ok && nees_theta ? fmt::format("{:.4f}", *nees_theta) : "");
+        "{},{},{},{}", m.fix_ok ? 1 : 0, m.published_ok && nees_xy ? fmt::format("{:.4f}", *nees_xy) : "",
+        m.published_ok && nees_theta ? fmt::format("{:.4f}", *nees_theta) : "", m.match_wrong ? 1 : 0);
     csv += fmt::format(
         "{},{},{},{:.4f},{:.4f},{:.5f},{},{},{},{},{:.5f},{:.5f},{:.6f},{:.2f},{:.2f},{},{:.3f},{},{},{},{},{"
         "}"

@@ -51,8 +51,11 @@ struct Measurement {
   int detected_visible = 0;
   int detections = 0;
   int false_detections = 0;
-  bool wrong = false;   ///< published as OK but off by more than the wrong-pose limits
-  bool fix_ok = false;  ///< the fix's status is OK (not DEGRADED)
+  bool wrong = false;  ///< published as OK but off by more than the wrong-pose limits
+  /// The matcher said OK and paired a detection with a reflector more than wrong_distance from
+  /// where the detection really is (judged on the matches, whatever the solver made of them).
+  bool match_wrong = false;
+  bool fix_ok = false;                                   ///< the fix's status is OK (not DEGRADED)
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< the published one [m^2, m rad, rad^2]
 };
 
@@ -61,6 +64,8 @@ struct ModeSummary {
   int measurements = 0;
   int published_ok = 0;
   int wrong_matches = 0;
+  int match_ok = 0;                ///< scans the matcher answered OK
+  int match_ok_wrong = 0;          ///< of them, with a wrong pair (Measurement::match_wrong)
   double mean_max_err_x_mm = 0.0;  ///< mean over poses of the max |dx| over its repeats
   double mean_max_err_y_mm = 0.0;
   double rmse_mm = 0.0;  ///< sqrt(mean(dx^2 + dy^2)) over published, not wrong, measurements

@@ -5,6 +5,7 @@
 #include "drive_study.hpp"
 #include "eval_plot.hpp"
 #include "path_plot_trace.hpp"
+#include "study_map.hpp"
 #include "world_renderer/world_loader.hpp"
 
 #include <fmt/format.h>
@@ -16,7 +17,7 @@ namespace refloc {
 
 int run_drive_command(const DriveOptions& o) {
   const sim::World world = sim::load_world(o.world_file);
-  const ReflectorMap map = load_reflector_map(world.map_file);
+  const ReflectorMap map = study_map(world, o.map_file, o.occluders);
   const RobotConfig robot = load_robot_config(o.robot_file);
   PipelineConfigs configs =
       load_pipeline_configs(PipelineMode::kDefault, o.extractor_file, o.matcher_file, o.solver_file);
@@ -44,6 +45,7 @@ int run_drive_command(const DriveOptions& o) {
       "range sigma {:.1f} mm, seed {}; fix_velocity window {:.2f} s\n",
       config.duration_s, o.speed_mps, path.lap_length(), o.world_file, o.heading, config.warmup_s, o.sigma_mm,
       o.seed, configs.extractor.fix_velocity.window_s);
+  fmt::print("occluders in the map: {} ({} segments)\n", o.occluders, occluder_segment_count(map.occluders));
   fmt::print(
       "{:<16} {:>5} {:>5} {:>4} {:>5} | {:>6} {:>6} {:>5} | {:>7} {:>6} {:>7} {:>6} {:>6} | {:>5} {:>6} "
       "{:>5}\n",
@@ -52,6 +54,9 @@ int run_drive_command(const DriveOptions& o) {
   nlohmann::json j;
   j["command"] = "drive";
   j["world"] = o.world_file;
+  j["map"] = o.map_file.empty() ? world.map_file : o.map_file;
+  j["occluders"] = o.occluders;
+  j["occluder_segments"] = occluder_segment_count(map.occluders);
   j["speed_mps"] = o.speed_mps;
   j["duration_s"] = config.duration_s;
   j["warmup_s"] = config.warmup_s;

@@ -8,6 +8,8 @@ namespace refloc {
 
 struct DriveOptions {
   std::string world_file = "deploy/config/world_demo.json";
+  std::string map_file;           ///< the map localized with; "": the world's
+  std::string occluders = "map";  ///< study_map: "map", "world" or "none"
   std::string robot_file = "deploy/config/robot.json";
   std::string extractor_file = "deploy/config/reflector_extractor.json";
   std::string matcher_file = "deploy/config/reflector_matcher.json";

@@ -10,6 +10,11 @@ namespace refloc {
 inline void add_drive_options(CLI::App* c, DriveOptions& o) {
   c->add_option("--world", o.world_file, "world file (the loop is world_demo.json's ring corridor)")
       ->capture_default_str();
+  c->add_option("--map", o.map_file, "map the localization loads (default: the world's map_file)");
+  c->add_option("--occluders", o.occluders,
+                "the matcher's walls: map (the map file's), world (the world's walls and obstacles), none")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"map", "world", "none"}));
   c->add_option("--robot", o.robot_file, "robot config (laser mount)")->capture_default_str();
   c->add_option("--extractor-config", o.extractor_file, "reflector_extractor config")->capture_default_str();
   c->add_option("--matcher-config", o.matcher_file, "reflector_matcher config")->capture_default_str();

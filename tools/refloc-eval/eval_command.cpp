@@ -7,8 +7,8 @@
 #include "common/robot_config.hpp"
 #include "eval_plot.hpp"
 #include "eval_report.hpp"
+#include "study_map.hpp"
 #include "world_renderer/world_loader.hpp"
-#include "world_renderer/world_occluders.hpp"
 
 #include <fmt/format.h>
 
@@ -37,20 +37,6 @@ sim::Lms100ErrorModel sensor_model(const EvalOptions& o) {
   return m;
 }
 
-/// The map the localization runs with: --map or the world's, with the occluders --occluders names.
-ReflectorMap localization_map(const EvalOptions& o, const sim::World& world) {
-  ReflectorMap map = load_reflector_map(o.map_file.empty() ? world.map_file : o.map_file);
-  if (o.occluders == "world") map.occluders = sim::world_occluders(world);
-  if (o.occluders == "none") map.occluders.clear();
-  return map;
-}
-
-size_t segment_count(const std::vector<MapOccluder>& occluders) {
-  size_t n = 0;
-  for (const MapOccluder& o : occluders) n += o.map_points.size() - 1 + (o.closed ? 1 : 0);
-  return n;
-}
-
 }  // namespace
 
 int run_eval(const std::string& command, EvalOptions o) {
@@ -65,7 +51,7 @@ int run_eval(const std::string& command, EvalOptions o) {
                        : "logs/refloc-eval-" + command;
   }
   const sim::World world = sim::load_world(o.world_file);
-  const ReflectorMap map = localization_map(o, world);
+  const ReflectorMap map = study_map(world, o.map_file, o.occluders);
   const RobotConfig robot = load_robot_config(o.robot_file);
   StudyConfig config;
   config.sensor = sensor_model(o);
@@ -89,7 +75,7 @@ int run_eval(const std::string& command, EvalOptions o) {
   if (paper_table) print_paper_table(r, poses, config.repeats);
   fmt::print("\n{} over {} poses x {} scans, world {}\n{}\noccluders in the map: {} ({} segments)\n", command,
              poses.size(), config.repeats, o.world_file, describe(config.sensor), o.occluders,
-             segment_count(map.occluders));
+             occluder_segment_count(map.occluders));
   print_summary("paper", r.paper);
   print_summary("default", r.default_mode);
 
@@ -98,7 +84,7 @@ int run_eval(const std::string& command, EvalOptions o) {
   j["world"] = o.world_file;
   j["map"] = o.map_file.empty() ? world.map_file : o.map_file;
   j["occluders"] = o.occluders;
-  j["occluder_segments"] = segment_count(map.occluders);
+  j["occluder_segments"] = occluder_segment_count(map.occluders);
   j["sigma_mm"] = o.sigma_mm;
   j["offset_mm"] = o.offset_mm;
   j["sensor_model"] = to_json(config.sensor);

@@ -70,6 +70,8 @@ void print_summary(const char* name, const ModeSummary& s) {
       name, s.published_ok, s.measurements, s.wrong_matches, s.mean_max_err_x_mm, s.mean_max_err_y_mm,
       s.rmse_mm, s.crlb_rmse_mm, s.crlb_ratio, s.point_beam_crlb_rmse_mm, s.point_beam_crlb_ratio,
       s.heading_rmse_deg, s.recall, s.false_detection_rate);
+  fmt::print("{:<8} matcher OK {} of {} scans, {} of them with a wrong pair\n", "", s.match_ok,
+             s.measurements, s.match_ok_wrong);
   const ConsistencySummary& c = s.consistency;
   fmt::print(
       "{:<8} NEES over {} OK fixes ({} unusable covariances): position mean {:.2f} (honest 2), outside 99 % "
