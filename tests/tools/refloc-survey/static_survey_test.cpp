@@ -4,6 +4,7 @@
 
 #include "static_survey.hpp"
 #include "rendered_static_survey.hpp"
+#include "static_progress.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -85,6 +86,29 @@ TEST(StaticSurvey, StatedRangeBiasMovesCentresAlongTheLineOfSight) {
   EXPECT_NEAR(r.map_cov_center(0, 0), 1e-4 * 0.36, 1e-12);
   EXPECT_NEAR(r.map_cov_center(0, 1), 1e-4 * 0.48, 1e-12);
   EXPECT_NEAR(r.map_cov_center(1, 1), 1e-4 * 0.64, 1e-12);
+}
+
+std::string progress_text(bool terminal, int total, int updates) {
+  std::FILE* file = std::tmpfile();
+  SurveyProgress progress(file, total, terminal);
+  for (int done = 1; done <= updates; ++done) progress.update(done, 5);
+  progress.finish();
+  std::rewind(file);
+  std::string text;
+  for (int c = std::fgetc(file); c != EOF; c = std::fgetc(file)) text += static_cast<char>(c);
+  std::fclose(file);
+  return text;
+}
+
+TEST(StaticSurvey, ProgressIsALineEveryTenPercentUnlessATerminal) {
+  const std::string lines = progress_text(false, 100, 100);
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 11);  // 0 %, 10 %, ..., 100 %
+  EXPECT_THAT(lines, ::testing::HasSubstr("scans  50 % (50/100), 5 reflectors in the last\n"));
+  EXPECT_EQ(lines.find('\r'), std::string::npos);
+  const std::string bar = progress_text(true, 20, 10);
+  EXPECT_EQ(std::count(bar.begin(), bar.end(), '\r'), 10);
+  EXPECT_EQ(std::count(bar.begin(), bar.end(), '\n'), 1);  // the bar's line ends once
+  EXPECT_THAT(bar, ::testing::HasSubstr("\rscans [###############...............]  50 % 10/20"));
 }
 
 void print_run(const char* what, const RenderedSurvey& run) {
