@@ -38,6 +38,6 @@ if [ -f "$jchart_jar" ]; then
 else
   echo "$0: warning: $jchart_jar missing (apt-get install libjchart2d-java): no plots" >&2
 fi
-# lcm-spy prints "Found N LCM types" at start: N should be 12.
+# lcm-spy prints "Found N LCM types" at start: N should be 15.
 CLASSPATH="$jar" exec java -Djava.net.preferIPv4Stack=true -cp "$classpath" lcm.spy.Spy \
   --lcm-url="$url" "${passthrough[@]}"

@@ -1,7 +1,8 @@
-// reflector_matcher: REFLECTORS (reflector_detections_t) + POSE prior (pose2d_t)
-// -> REFLECTOR_MATCHES (reflector_matches_t), one output per scan. Which prior, the
-// match and the state are MatcherNode's; this file converts.
+// reflector_matcher: REFLECTORS + POSE prior -> REFLECTOR_MATCHES, one output per scan; with
+// LMS100_SCAN (line of sight) -> MAP_HEALTH once a second. Which prior, the match, the map
+// evidence and the state are MatcherNode's; this file converts.
 
+#include "reflector_matcher/map_health_messages.hpp"
 #include "reflector_matcher/matcher_config_file.hpp"
 #include "reflector_matcher/matcher_messages.hpp"
 #include "reflector_matcher/matcher_node.hpp"
@@ -14,6 +15,8 @@
 #include "common/service_command_line.hpp"
 #include "common/service_runtime.hpp"
 
+#include <refloc/laser_scan_t.hpp>
+#include <refloc/map_health_t.hpp>
 #include <refloc/pose2d_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
@@ -26,6 +29,27 @@ void log_startup(StartupEvent event, double window_s) {
     spdlog::info("relocalized globally after start; tracking from now on");
   if (event == StartupEvent::kGaveUp)
     spdlog::warn("no global relocalization within {:.1f} s of start: tracking from the POSE prior", window_s);
+}
+
+// MAP_HEALTH once a period, its counters in the heartbeat, each state change logged.
+void wire_map_health(ServiceRuntime& runtime, MatcherNode& node, const MapHealthConfig& config) {
+  MapHealthMonitor* monitor = node.map_health();
+  if (monitor == nullptr) return;
+  runtime.subscribe<laser_scan_t>(config.scan_channel,
+                                  [&node, scan = LaserScan()](const laser_scan_t& msg) mutable {
+                                    copy_from_lcm(msg, scan);
+                                    node.on_scan(scan);
+                                  });
+  runtime.add_periodic(
+      config.publish_period, [&runtime, monitor, channel = config.channel, out = map_health_t(),
+                              changes = std::vector<MapHealthChange>()]() mutable {
+        const MapHealthReport& report = monitor->report(now_utime(), monotonic_us(), changes);
+        for (const MapHealthChange& c : changes)
+          c.warning ? spdlog::warn("map health: {}", c.text) : spdlog::info("map health: {}", c.text);
+        report.for_each_counter([&](const char* name, int64_t value) { runtime.counter(name) = value; });
+        to_message(report, out);
+        runtime.publish(channel, out);
+      });
 }
 
 int run(const std::string& lcm_url, const std::string& config_path, const std::string& robot_path,
@@ -56,6 +80,7 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     to_message(msg, o.result, out);
     runtime.publish(config.output_channel, out);
   });
+  wire_map_health(runtime, node, config.map_health);
   return runtime.run();
 }
 

@@ -193,6 +193,7 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
       {"/min_matches", "count",
        "fewer explained detections: LOST, no fix (3 is the fewest a 2D pose can be checked with)"},
       m.min_matches, 3, 100));
+  s.map_health = parse_map_health_config(config);
   return s;
 }
 

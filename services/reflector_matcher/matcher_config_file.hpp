@@ -2,6 +2,7 @@
 // deploy/config/reflector_matcher.json: the matcher's settings, its map file and
 // its channels. Every key is optional (defaults as in MatcherConfig).
 
+#include "reflector_matcher/map_health_config.hpp"
 #include "reflector_matcher/matcher_config.hpp"
 #include "reflector_matcher/prior_selector.hpp"
 
@@ -18,6 +19,7 @@ struct MatcherServiceConfig {
   std::string prior_channel = "POSE";
   std::string output_channel = "REFLECTOR_MATCHES";
   PriorSelectionConfig prior;  ///< the file's top-level prior keys
+  MapHealthConfig map_health;  ///< "map_health": evidence about the map, MAP_HEALTH
 };
 
 /// Read and validate; base_dir resolves a relative map_file (usually the config file's folder).

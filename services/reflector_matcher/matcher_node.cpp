@@ -20,7 +20,11 @@ MatcherNode::MatcherNode(ReflectorMap map, const MatcherServiceConfig& config, c
     : matcher_(std::move(map), config.matcher),
       selector_(config.prior, robot_T_laser),
       detection_checks_("detections", chain_stream_stamp_limits()),
-      pose_checks_("pose", pose_stamp_limits()) {}
+      pose_checks_("pose", pose_stamp_limits()) {
+  if (config.map_health.enabled)
+    map_health_ =
+        std::make_unique<MapHealthMonitor>(matcher_.map(), config.matcher.sensor, config.map_health);
+}
 
 const std::vector<NodeEvent>& MatcherNode::on_pose(const FusedPose& pose, int64_t host_utime) {
   pose_events_.clear();
@@ -58,6 +62,8 @@ const MatcherOutput& MatcherNode::on_detections(int64_t utime, int64_t scan_coun
   output_.prior_source = choice.source;
   matcher_.match(detections, choice.prior ? &*choice.prior : nullptr, output_.result);
   output_.startup_event = selector_.on_result(utime, output_.result);
+  if (map_health_)
+    map_health_->on_match(utime, detections, output_.result, choice.source == PriorSource::kFusedPose);
   return output_;
 }
 

@@ -7,11 +7,13 @@
 
 #include "common/input_stream_checks.hpp"
 #include "common/node_event.hpp"
+#include "reflector_matcher/map_health_monitor.hpp"
 #include "reflector_matcher/matcher_config_file.hpp"
 #include "reflector_matcher/prior_selector.hpp"
 #include "reflector_matcher/reflector_matcher.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -75,8 +77,16 @@ class MatcherNode {
 
   const ReflectorMatcher& matcher() const { return matcher_; }
 
+  /// A laser scan: map health checks against it whether an expected reflector was in sight.
+  void on_scan(const LaserScan& scan) {
+    if (map_health_) map_health_->on_scan(scan);
+  }
+  /// The map evidence of every accepted OK scan; null when map_health is disabled.
+  MapHealthMonitor* map_health() { return map_health_.get(); }
+
  private:
   ReflectorMatcher matcher_;
+  std::unique_ptr<MapHealthMonitor> map_health_;
   PriorSelector selector_;
   InputStreamChecks detection_checks_;
   /// POSE stamps need not increase: fusion answers a laser fix with a pose at the fix's scan

@@ -8,6 +8,9 @@
 #include <gtest/gtest.h>
 #include <refloc/heartbeat_t.hpp>
 #include <refloc/laser_scan_t.hpp>
+#include <refloc/map_candidate_t.hpp>
+#include <refloc/map_health_t.hpp>
+#include <refloc/map_reflector_health_t.hpp>
 #include <refloc/nav_goal_t.hpp>
 #include <refloc/nav_status_t.hpp>
 #include <refloc/odometry_t.hpp>
@@ -44,7 +47,10 @@ TEST(LcmSpyTypes, EveryCppTypeResolvesToItsJavaClassInTheJar) {
   add<nav_goal_t>(expected);
   add<nav_status_t>(expected);
   add<heartbeat_t>(expected);
-  ASSERT_EQ(expected.size(), 12u);
+  add<map_health_t>(expected);
+  add<map_reflector_health_t>(expected);
+  add<map_candidate_t>(expected);
+  ASSERT_EQ(expected.size(), 15u);
 
   // lcm-spy's class path: LCM, jchart2d (its plots), our types.
   std::string command = std::string("java -cp /usr/share/java/lcm.jar:/usr/share/java/jchart2d.jar:") +
@@ -53,7 +59,7 @@ TEST(LcmSpyTypes, EveryCppTypeResolvesToItsJavaClassInTheJar) {
   const auto result = testing::run_command(command);
   ASSERT_EQ(result.exit_code, 0) << result.output;
 
-  EXPECT_NE(result.output.find("Found 12 LCM types"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("Found 15 LCM types"), std::string::npos) << result.output;
   std::map<int64_t, std::string> resolved;
   std::istringstream lines(result.output);
   std::string line;

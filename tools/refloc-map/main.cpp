@@ -2,18 +2,20 @@
 //   import   a format-2 map from a CSV (a total-station survey)
 //   export   a map's reflectors as CSV
 //   info     what a map holds
-// Each is an add_*_command / run_*_command pair in the library; `update` (the next version from
-// MAP_HEALTH evidence) joins the same way: one line to add it, one to dispatch it.
+//   update   the next version from the matcher's MAP_HEALTH evidence in an LCM log
+// Each is an add_*_command / run_*_command pair in the library.
 // Exit 0 done, 2 bad input file (named with file and key or line), 64 usage error.
 
 #include "common/guarded_main.hpp"
 #include "common/program_version.hpp"
 #include "map_commands.hpp"
+#include "map_update.hpp"
 
 #include <CLI/CLI.hpp>
 
 int main(int argc, char** argv) {
-  CLI::App app{"refloc-map: reflector map files: import from CSV, export to CSV, info"};
+  CLI::App app{
+      "refloc-map: reflector map files: import from CSV, export to CSV, info, update from MAP_HEALTH"};
   refloc::add_version_flag(app, "refloc-map");
   app.require_subcommand(1);
   refloc::ImportCommandOptions import_options;
@@ -22,6 +24,8 @@ int main(int argc, char** argv) {
   CLI::App* export_command = refloc::add_export_command(app, export_options);
   refloc::InfoCommandOptions info_options;
   CLI::App* info_command = refloc::add_info_command(app, info_options);
+  refloc::UpdateCommandOptions update_options;
+  CLI::App* update_command = refloc::add_update_command(app, update_options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -31,6 +35,7 @@ int main(int argc, char** argv) {
     if (import_command->parsed()) return refloc::run_import_command(import_options);
     if (export_command->parsed()) return refloc::run_export_command(export_options);
     if (info_command->parsed()) return refloc::run_info_command(info_options);
+    if (update_command->parsed()) return refloc::run_update_command(update_options);
     return refloc::kExitUsageError;
   });
 }
