@@ -87,20 +87,20 @@ void parse_candidates(const JsonConfig& c, MapHealthConfig& m) {
                                                "and the laser positions it was seen from span at least this"},
                                               m.candidate_min_viewpoint_spread, 0.0, 100.0);
   m.candidate_min_view_angle =
-      c.number(
-          {"/map_health/candidate_min_view_angle_deg", "deg",
-           "and from directions this far apart as seen from the cluster: the centre of a flat bright strip "
-           "follows the line of sight, a cylinder's does not, and telling them apart needs the turn"},
-          m.candidate_min_view_angle * 180.0 / M_PI, 0.0, 180.0) *
+      c.number({"/map_health/candidate_min_view_angle_deg", "deg",
+                "and from directions this far apart as seen from the cluster, so the face test "
+                "(candidate_radius_m) can tell a cylinder from a flat face"},
+               m.candidate_min_view_angle * 180.0 / M_PI, 0.0, 180.0) *
       M_PI / 180.0;
   m.candidate_radius = c.positive_number(
       {"/map_health/candidate_radius_m", "m",
-       "radius assumed for an unmapped reflector (the fitted centre lies this far behind a flat strip)"},
+       "radius assumed for an unmapped reflector: centres moved this far toward the laser scatter more "
+       "than the centres for a cylinder, less for a flat face whose fitted centre follows the line of sight"},
       m.candidate_radius, 5.0, "0 could not tell a strip from a cylinder");
   m.candidate_max_scatter = c.positive_number(
       {"/map_health/candidate_max_scatter_m", "m",
-       "a cluster whose sightings scatter more (std dev about their mean, larger axis) is no reflector: "
-       "flat tape's fitted centre wanders with the viewpoint"},
+       "a cluster whose sightings scatter more (std dev about their mean, larger axis) is no single fixed "
+       "reflector"},
       m.candidate_max_scatter, 1.0, "0 would refuse every candidate");
   m.max_clusters = count(c,
                          {"/map_health/max_clusters", "count",
