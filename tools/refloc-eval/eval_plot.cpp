@@ -1,15 +1,9 @@
 #include "eval_plot.hpp"
 
+#include "common/child_program.hpp"
 #include "common/program_version.hpp"
 
 #include <fmt/format.h>
-#include <spawn.h>
-#include <sys/wait.h>
-
-#include <cerrno>
-#include <cstdio>
-
-extern char** environ;
 
 namespace refloc {
 
@@ -27,17 +21,7 @@ int run_refloc_plot(const std::vector<std::string>& args) {
   // The script's #!/usr/bin/python3 is Debian's, where python3-matplotlib is installed.
   std::vector<std::string> words = {shipped_path("tools/refloc-plot/refloc-plot.py")};
   words.insert(words.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  std::fflush(stdout);  // our lines before the plotter's
-  pid_t pid = 0;
-  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return -1;
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run_child_program(words);
 }
 
 }  // namespace refloc
