@@ -16,15 +16,18 @@ namespace refloc {
 struct TrackSighting {
   int scan = -1;
   int detection = -1;
-  Eigen::Vector2d map_p = Eigen::Vector2d::Zero();  ///< centre through the front end's pose [m]
+  /// The measured centre through the front end's pose, no range offset taken off [m].
+  Eigen::Vector2d map_p = Eigen::Vector2d::Zero();
+  /// Its beam's direction in the map frame: a range offset b moves it by b along this [-].
+  Eigen::Vector2d map_direction = Eigen::Vector2d::UnitX();
 };
 
 /// When a candidate becomes a map entry (all must hold).
 struct PromotionRule {
-  int min_sightings = 20;  ///< detections of it [-]
+  int min_sightings = 10;  ///< detections of it [-]
   /// The directions it was seen from span at least this (from the candidate to the laser) [rad]:
   /// a metal glint is only seen within ~5 deg of the plate's normal.
-  double min_view_span = 20.0 * M_PI / 180.0;
+  double min_view_span = 15.0 * M_PI / 180.0;
   /// RMS distance of the sightings from their mean at most this [m]: a cylinder's centre does
   /// not move with the viewpoint, tape's and metal's do.
   double max_scatter = 0.025;
@@ -34,16 +37,19 @@ struct PromotionRule {
   double min_seen_fraction = 0.1;
 };
 
+/// Position and scatter are those of the sightings with a range offset b taken off (the front
+/// end's current estimate, which may change after the sightings were made): the sums kept are
+/// exact for any b.
 class LandmarkTrack {
  public:
-  /// view_angle: direction from the sighting to the laser in the map frame [rad].
-  void add(const TrackSighting& sighting, double view_angle);
+  void add(const TrackSighting& sighting);
   /// The scan saw the track's place in view (field of view, range) whether or not it was detected.
   void count_expected() { ++expected_; }
 
-  const Eigen::Vector2d& mean() const { return mean_; }
-  /// RMS distance of the sightings from their mean [m].
-  double scatter() const;
+  /// Mean of the sightings, each moved back by range_bias along its beam [m].
+  Eigen::Vector2d mean(double range_bias = 0.0) const;
+  /// RMS distance of those sightings from their mean [m].
+  double scatter(double range_bias = 0.0) const;
   double view_span() const { return view_max_ - view_min_; }  ///< [rad]
   int sightings() const { return static_cast<int>(sightings_.size()); }
   int expected() const { return expected_; }
@@ -52,12 +58,18 @@ class LandmarkTrack {
   const std::vector<TrackSighting>& all_sightings() const { return sightings_; }
 
   /// "" when rule holds, else why not (the first failing test, with its number).
-  std::string promotion_failure(const PromotionRule& rule) const;
+  std::string promotion_failure(const PromotionRule& rule, double range_bias = 0.0) const;
 
  private:
   std::vector<TrackSighting> sightings_;
-  Eigen::Vector2d mean_ = Eigen::Vector2d::Zero();
-  double sum_squared_distance_ = 0.0;  ///< Welford: sum of |p - mean|^2 [m^2]
+  // Sums over sightings of q = p - origin (origin: the first sighting, against cancellation)
+  // and u (the beam direction): mean = origin + (sum_q - b sum_u) / n and
+  // sum |q - b u|^2 = sum_qq - 2 b sum_qu + b^2 n.
+  Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
+  Eigen::Vector2d sum_q_ = Eigen::Vector2d::Zero();
+  Eigen::Vector2d sum_u_ = Eigen::Vector2d::Zero();
+  double sum_qq_ = 0.0;
+  double sum_qu_ = 0.0;
   double first_view_ = 0.0;
   double view_min_ = 0.0, view_max_ = 0.0;  ///< relative to first_view_ [rad]
   int expected_ = 0;

@@ -1,6 +1,7 @@
 #include "drive_landmark_tracker.hpp"
 
 #include "pose_solver/pose_solver.hpp"
+#include "pose_solver/range_bias_filter.hpp"
 #include "reflector_matcher/map_grid.hpp"
 #include "reflector_matcher/tracking_associator.hpp"
 
@@ -20,7 +21,8 @@ class Tracker {
       : robot_T_laser_(robot_T_laser),
         noise_(noise),
         config_(config),
-        solver_(solver_config(config), robot_T_laser) {}
+        solver_(config.solver, robot_T_laser),
+        range_bias_(config.solver.range_bias) {}
 
   void run(const std::vector<DriveScan>& scans, const Pose2& start, TrackerResult& out) {
     out.scans.resize(scans.size());
@@ -34,6 +36,7 @@ class Tracker {
       }
       TrackedScan& t = out.scans[k];
       association_[k].assign(scans[k].detections.size(), -1);
+      rebuild_pose_map();
       t.laser_corrected = correct(scans[k], pose, association_[k]);
       if (!t.laser_corrected) ++out.scans_dead_reckoned;
       t.map_T_robot = pose;
@@ -44,21 +47,19 @@ class Tracker {
   }
 
  private:
-  static SolverConfig solver_config(const LandmarkTrackerConfig& config) {
-    SolverConfig c = config.solver;
-    c.range_bias.estimate = false;  // the batch adjustment estimates it from the whole drive
-    c.range_bias.prior_mean = 0.0;
-    return c;
-  }
-
   /// The pose from the landmarks mapped so far; association[d] = track index of detection d.
   bool correct(const DriveScan& scan, Pose2& pose, std::vector<int>& association) {
     if (!associator_ || static_cast<int>(scan.detections.size()) < config_.min_matches) return false;
     const PosePrior prior{pose * robot_T_laser_, covariance_};
     if (!associator_->associate(scan.detections, prior, match_)) return false;
+    // The range offset as pose_solver keeps it: an uncorrected +30 mm moves every sighting
+    // 30 mm along its beam, and a centre seen from all sides then scatters like a distractor's.
+    solver_.set_range_bias_prior(range_bias_.prior_at(scan.utime));
     solver_.solve(scan.detections, match_.matches, solution_);
     if (solution_.status == SolveStatus::kLost || solution_.reflectors_used < config_.min_matches)
       return false;
+    if (solution_.status == SolveStatus::kOk && solution_.range_bias_use == RangeBiasUse::kEstimated)
+      range_bias_.update(solution_.range_bias, solution_.range_bias_sigma);
     const Pose2 delta = pose.inverse() * solution_.map_T_robot;
     if (std::hypot(delta.x, delta.y) > kMaxCorrection_m || std::abs(delta.theta) > kMaxCorrection_rad)
       return false;
@@ -67,7 +68,7 @@ class Tracker {
     for (size_t m = 0; m < match_.matches.size(); ++m) {
       if (!solution_.used[m]) continue;
       association[static_cast<size_t>(match_.matches[m].detection_index)] =
-          track_of_landmark_[static_cast<size_t>(match_.matches[m].map_id)];
+          track_of_[static_cast<size_t>(match_.matches[m].map_id)];
     }
     return true;
   }
@@ -75,9 +76,11 @@ class Tracker {
   int record_sightings(int k, const DriveScan& scan, const Pose2& pose, std::vector<int>& association) {
     const Pose2 map_T_laser = pose * robot_T_laser_;
     int matched = 0;
-    bool promoted = false;
     for (size_t d = 0; d < scan.detections.size(); ++d) {
-      const Eigen::Vector2d map_p = map_T_laser * scan.detections[d].laser_p_center;
+      const Eigen::Vector2d& laser_p = scan.detections[d].laser_p_center;
+      const Eigen::Vector2d map_direction = map_T_laser.rotation() * laser_p.normalized();
+      const Eigen::Vector2d raw_map_p = map_T_laser * laser_p;
+      const Eigen::Vector2d map_p = raw_map_p - range_bias_.mean() * map_direction;
       int track = association[d];
       if (track >= 0) {
         ++matched;
@@ -92,22 +95,31 @@ class Tracker {
         association[d] = track;
       }
       LandmarkTrack& t = tracks_[static_cast<size_t>(track)];
-      const Eigen::Vector2d to_laser = map_T_laser.translation() - map_p;
-      t.add({k, static_cast<int>(d), map_p}, std::atan2(to_laser.y(), to_laser.x()));
+      t.add({k, static_cast<int>(d), raw_map_p, map_direction});
       seen_this_scan_.push_back(track);
-      if (!is_landmark_[static_cast<size_t>(track)] && t.promotion_failure(config_.promotion).empty()) {
+      if (!is_landmark_[static_cast<size_t>(track)] && t.promotion_failure(rule(), bias()).empty()) {
         is_landmark_[static_cast<size_t>(track)] = 1;
-        promoted = true;
+        ++landmarks_;
       }
     }
-    if (promoted) rebuild_landmark_map();
-    refresh_landmark_positions();
     return matched;
+  }
+
+  double bias() const { return range_bias_.mean(); }
+
+  /// Until min_matches landmarks exist nothing corrects dead reckoning, whose drift then spreads
+  /// every candidate: the first ones need no view span, only consistent sightings. The batch's
+  /// checks judge them like every other landmark.
+  PromotionRule rule() const {
+    PromotionRule r = config_.promotion;
+    if (landmarks_ < config_.min_matches) r.min_view_span = 0.0;
+    return r;
   }
 
   bool near_landmark(const Eigen::Vector2d& map_p) const {
     for (size_t i = 0; i < tracks_.size(); ++i) {
-      if (is_landmark_[i] && (tracks_[i].mean() - map_p).norm() < config_.landmark_exclusion) return true;
+      if (is_landmark_[i] && (tracks_[i].mean(bias()) - map_p).norm() < config_.landmark_exclusion)
+        return true;
     }
     return false;
   }
@@ -117,7 +129,7 @@ class Tracker {
     double best_distance = config_.candidate_gate;
     for (size_t i = 0; i < tracks_.size(); ++i) {
       if (is_landmark_[i]) continue;
-      const double distance = (tracks_[i].mean() - map_p).norm();
+      const double distance = (tracks_[i].mean(bias()) - map_p).norm();
       if (distance < best_distance) {
         best_distance = distance;
         best = static_cast<int>(i);
@@ -133,33 +145,35 @@ class Tracker {
     for (int t : seen_this_scan_) seen_flag_[static_cast<size_t>(t)] = 1;
     seen_this_scan_.clear();
     for (size_t i = 0; i < tracks_.size(); ++i) {
-      const Eigen::Vector2d p = laser_T_map * tracks_[i].mean();
+      const Eigen::Vector2d p = laser_T_map * tracks_[i].mean(bias());
       const bool in_view = p.norm() <= config_.expected_range &&
                            std::abs(std::atan2(p.y(), p.x())) <= 0.5 * config_.sensor.field_of_view;
       if (in_view || seen_flag_[i]) tracks_[i].count_expected();
     }
   }
 
-  void rebuild_landmark_map() {
-    landmark_map_.reflectors.clear();
-    track_of_landmark_.clear();
+  /// What the pose is corrected against: the landmarks and the candidates already seen
+  /// consistently, so the front end stays locked while new reflectors come into view (a
+  /// distractor among them is one outlier for the pose solver). id = index into track_of_.
+  void rebuild_pose_map() {
+    pose_map_.reflectors.clear();
+    track_of_.clear();
     for (size_t i = 0; i < tracks_.size(); ++i) {
-      if (!is_landmark_[i]) continue;
+      const LandmarkTrack& t = tracks_[i];
+      const bool anchor = is_landmark_[i] || (t.sightings() >= config_.anchor_min_sightings &&
+                                              t.scatter(bias()) <= config_.promotion.max_scatter);
+      if (!anchor) continue;
       MapReflector r;
-      r.id = static_cast<int>(track_of_landmark_.size());
-      r.map_p_center = tracks_[i].mean();
-      landmark_map_.reflectors.push_back(r);
-      track_of_landmark_.push_back(static_cast<int>(i));
+      r.id = static_cast<int>(track_of_.size());
+      r.map_p_center = t.mean(bias());
+      pose_map_.reflectors.push_back(r);
+      track_of_.push_back(static_cast<int>(i));
     }
-    if (static_cast<int>(landmark_map_.reflectors.size()) < config_.min_matches) return;
-    grid_ = std::make_unique<MapGrid>(landmark_map_, 0.5 * config_.sensor.max_range);
-    associator_ = std::make_unique<TrackingAssociator>(
-        landmark_map_, *grid_, config_.tracking, config_.sensor, config_.relocalization, config_.min_matches);
-  }
-
-  void refresh_landmark_positions() {
-    for (size_t j = 0; j < track_of_landmark_.size(); ++j)
-      landmark_map_.reflectors[j].map_p_center = tracks_[static_cast<size_t>(track_of_landmark_[j])].mean();
+    associator_.reset();
+    if (static_cast<int>(pose_map_.reflectors.size()) < config_.min_matches) return;
+    grid_ = std::make_unique<MapGrid>(pose_map_, 0.5 * config_.sensor.max_range);
+    associator_ = std::make_unique<TrackingAssociator>(pose_map_, *grid_, config_.tracking, config_.sensor,
+                                                       config_.relocalization, config_.min_matches);
   }
 
   void finish(TrackerResult& out) {
@@ -173,6 +187,7 @@ class Tracker {
       }
     }
     out.association = std::move(association_);
+    out.range_bias = bias();
     for (auto& scan : out.association)
       for (int& a : scan) a = a >= 0 ? landmark_index[static_cast<size_t>(a)] : -1;
   }
@@ -181,12 +196,14 @@ class Tracker {
   OdometryNoise noise_;
   LandmarkTrackerConfig config_;
   PoseSolver solver_;
+  RangeBiasFilter range_bias_;
   Eigen::Matrix3d covariance_ = Eigen::Matrix3d::Zero();  ///< of the pose since the last correction
   std::vector<LandmarkTrack> tracks_;
   std::vector<char> is_landmark_;
+  int landmarks_ = 0;
   std::vector<std::vector<int>> association_;  ///< per scan, per detection: track index or -1
-  ReflectorMap landmark_map_;                  ///< the landmarks, id = index into track_of_landmark_
-  std::vector<int> track_of_landmark_;
+  ReflectorMap pose_map_;                      ///< what the pose is corrected against (rebuild_pose_map)
+  std::vector<int> track_of_;
   std::unique_ptr<MapGrid> grid_;
   std::unique_ptr<TrackingAssociator> associator_;
   MatchResult match_;

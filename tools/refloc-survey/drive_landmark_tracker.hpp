@@ -1,8 +1,9 @@
 #pragma once
 // The survey's front end: landmark association from a cold start, with no map and no ids.
 // Each scan's pose is dead-reckoned from odometry and corrected against the landmarks mapped
-// so far (the matcher's TrackingAssociator on them, then the pose solver's fit), so odometry's
-// drift (~0.8 m over the demo loop) never reaches the loop closure. Detections no landmark
+// so far and the candidates already seen consistently (the matcher's TrackingAssociator on
+// them, then the pose solver's fit with its range bias filter), so odometry's drift (~0.8 m
+// over the demo loop) never reaches the loop closure. Detections no landmark
 // explains become candidates (LandmarkTrack), and a candidate becomes a landmark only by the
 // PromotionRule. Its output is the batch adjustment's starting point and data association.
 
@@ -32,10 +33,13 @@ struct LandmarkTrackerConfig {
   double expected_range = 8.0;
   /// Matched landmarks needed to correct the pose by the laser; fewer: dead reckoning [-].
   int min_matches = 3;
+  /// A candidate seen this often, its centre within promotion.max_scatter, also corrects the
+  /// pose (it is not mapped for that): the front end stays locked between promotions [-].
+  int anchor_min_sightings = 3;
   SensorVisibilityConfig sensor;  ///< the matcher's defaults
   TrackingConfig tracking;
   RelocalizationConfig relocalization;
-  SolverConfig solver;  ///< the range bias is held at 0 here; the batch estimates it
+  SolverConfig solver;  ///< pose_solver's defaults, its range bias filter included
 };
 
 /// Per scan what the front end concluded.
@@ -52,6 +56,8 @@ struct TrackerResult {
   /// Per scan, per detection: index into landmarks, or -1.
   std::vector<std::vector<int>> association;
   int scans_dead_reckoned = 0;  ///< without a laser correction
+  /// The range offset the front end ended with (its tracks' positions are meant with it) [m].
+  double range_bias = 0.0;
 };
 
 /// Run the front end over the whole drive; start: map_T_robot of the first scan.

@@ -38,13 +38,23 @@ int hough_peak(const std::vector<Eigen::Vector2d>& cells, const std::vector<char
       ++votes[static_cast<size_t>(a) * static_cast<size_t>(rhos) + static_cast<size_t>(r)];
     }
   }
-  const auto best = std::max_element(votes.begin(), votes.end());
-  const auto index = static_cast<int>(best - votes.begin());
-  const double angle = (index / rhos) * M_PI / angles;
-  const double rho = (index % rhos - rhos / 2) * rho_step;
+  // Votes of two neighbouring offsets together: a wall two cells thick then counts whole at its
+  // true direction, where a slanted line through a thick blob used to win.
+  int best = -1, best_a = 0, best_r = 0;
+  for (int a = 0; a < angles; ++a) {
+    const int* row = votes.data() + static_cast<size_t>(a) * static_cast<size_t>(rhos);
+    for (int r = 0; r + 1 < rhos; ++r) {
+      if (row[r] + row[r + 1] <= best) continue;
+      best = row[r] + row[r + 1];
+      best_a = a;
+      best_r = r;
+    }
+  }
+  const double angle = best_a * M_PI / angles;
+  const double rho = (best_r + 0.5 - rhos / 2) * rho_step;
   line.point = rho * Eigen::Vector2d(std::cos(angle), std::sin(angle));
   line.direction = Eigen::Vector2d(-std::sin(angle), std::cos(angle));
-  return *best;
+  return best;
 }
 
 /// Total least squares through the cells within tolerance of line; their indices in members.
@@ -80,13 +90,27 @@ void split_runs(const std::vector<Eigen::Vector2d>& cells, const std::vector<siz
     if (i < t.size() && t[i] - t[i - 1] <= config.max_gap) continue;
     // A cell stands for its whole width: the segment reaches half a cell past the outer centres.
     const double from = t[first] - 0.5 * config.cell_size, to = t[i - 1] + 0.5 * config.cell_size;
-    if (to - from >= config.min_segment_length) {
+    // Dense along its length: a surface, not a few cells of a blob that a line happens to cross.
+    const double density = static_cast<double>(i - first) * config.cell_size / (to - from);
+    if (to - from >= config.min_segment_length && density >= config.min_density) {
       MapOccluder o;
       o.map_points = {line.point + from * line.direction, line.point + to * line.direction};
       out.push_back(std::move(o));
     }
     first = i;
   }
+}
+
+/// The beam (unit direction u, echo at range) passed within clearance of a reflector before
+/// its echo: its range may blend cylinder and wall (a mixed pixel), so it says nothing sure.
+bool grazes_landmark(const Eigen::Vector2d& u, double range,
+                     const std::vector<Eigen::Vector2d>& laser_p_landmark, double clearance) {
+  for (const Eigen::Vector2d& l : laser_p_landmark) {
+    const double along = u.dot(l);
+    if (along <= 0.0 || along > range + clearance) continue;
+    if (std::abs(u.x() * l.y() - u.y() * l.x()) < clearance) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -116,6 +140,7 @@ std::vector<MapOccluder> segments_from_cells(std::vector<Eigen::Vector2d> cells,
 
 std::vector<MapOccluder> trace_occluders(const std::vector<DriveScan>& scans,
                                          const std::vector<Pose2>& map_T_robot, const Pose2& robot_T_laser,
+                                         double range_bias, const std::vector<Eigen::Vector2d>& landmarks,
                                          const OccluderConfig& config) {
   std::unordered_map<uint64_t, int> hits;
   const auto key = [&](const Eigen::Vector2d& p) {
@@ -123,12 +148,18 @@ std::vector<MapOccluder> trace_occluders(const std::vector<DriveScan>& scans,
     const auto iy = static_cast<int32_t>(std::floor(p.y() / config.cell_size));
     return (static_cast<uint64_t>(static_cast<uint32_t>(ix)) << 32) | static_cast<uint32_t>(iy);
   };
-  const double max_range2 = config.max_range * config.max_range;
+  std::vector<Eigen::Vector2d> laser_p_landmark;
   for (size_t k = 0; k < scans.size() && k < map_T_robot.size(); ++k) {
     const Pose2 map_T_laser = map_T_robot[k] * robot_T_laser;
+    const Pose2 laser_T_map = map_T_laser.inverse();
+    laser_p_landmark.clear();
+    for (const Eigen::Vector2d& l : landmarks) laser_p_landmark.push_back(laser_T_map * l);
     for (const Eigen::Vector2f& p : scans[k].laser_p_diffuse) {
-      const Eigen::Vector2d laser_p = p.cast<double>();
-      if (laser_p.squaredNorm() > max_range2) continue;  // also keeps the cell indices within int32
+      Eigen::Vector2d laser_p = p.cast<double>();
+      const double range = laser_p.norm();
+      if (range > config.max_range || range <= 0.0) continue;  // also keeps the cell indices within int32
+      if (grazes_landmark(laser_p / range, range, laser_p_landmark, config.landmark_clearance)) continue;
+      laser_p *= (range - range_bias) / range;
       ++hits[key(map_T_laser * laser_p)];
     }
   }

@@ -1,22 +1,17 @@
 #include "drive_report.hpp"
 
+#include "common/child_program.hpp"
 #include "common/json_config.hpp"
 #include "common/program_version.hpp"
 
 #include <fmt/format.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <Eigen/Eigenvalues>
 #include <nlohmann/json.hpp>
 
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-
-extern char** environ;
 
 namespace refloc {
 namespace {
@@ -46,14 +41,14 @@ std::string reflectors_csv(const DriveSurveyResult& s) {
   std::string csv =
       "id,x_m,y_m,cov_xx_m2,cov_xy_m2,cov_yy_m2,sigma_major_mm,sigma_minor_mm,times_seen,scans_seen,scans_"
       "expected,"
-      "residual_rms_mm,normalised_rms,view_span_deg,anchor\n";
+      "residual_rms_mm,normalised_rms,view_span_deg,surface_clearance_mm,anchor\n";
   for (const SurveyedReflector& r : s.reflectors) {
     const Eigen::Vector2d sigma = sigmas(r.covariance);
     csv += fmt::format(
-        "{},{:.6f},{:.6f},{:.6e},{:.6e},{:.6e},{:.3f},{:.3f},{},{},{},{:.3f},{:.3f},{:.1f},{}\n", r.id,
+        "{},{:.6f},{:.6f},{:.6e},{:.6e},{:.6e},{:.3f},{:.3f},{},{},{},{:.3f},{:.3f},{:.1f},{:.1f},{}\n", r.id,
         r.map_p.x(), r.map_p.y(), r.covariance(0, 0), r.covariance(0, 1), r.covariance(1, 1), sigma(0) * 1e3,
         sigma(1) * 1e3, r.times_seen, r.scans_seen, r.scans_expected, r.residual_rms * 1e3, r.normalised_rms,
-        r.view_span * 180.0 / M_PI, r.anchor ? 1 : 0);
+        r.view_span * 180.0 / M_PI, r.surface_clearance * 1e3, r.anchor ? 1 : 0);
   }
   return csv;
 }
@@ -159,13 +154,15 @@ std::string survey_report_text(const DriveSurveyResult& s) {
                                  s.reflectors.size(), s.scans, s.observations_used);
   text +=
       "   id        x_m        y_m  sigma_mm (major/minor)  detections  scans seen/in view  residual_rms_mm  "
-      "norm_rms\n";
+      "norm_rms  surface_mm\n";
   for (const SurveyedReflector& r : s.reflectors) {
     const Eigen::Vector2d sigma = sigmas(r.covariance);
     text += fmt::format(
-        "{:5d} {:10.4f} {:10.4f}  {:8.2f} / {:5.2f}{:9}  {:10d}  {:8d} / {:7d}  {:15.2f}  {:8.2f}\n", r.id,
-        r.map_p.x(), r.map_p.y(), sigma(0) * 1e3, sigma(1) * 1e3, r.anchor ? " (anchor)" : "", r.times_seen,
-        r.scans_seen, r.scans_expected, r.residual_rms * 1e3, r.normalised_rms);
+        "{:5d} {:10.4f} {:10.4f}  {:8.2f} / {:5.2f}{:9}  {:10d}  {:8d} / {:7d}  {:15.2f}  {:8.2f}  "
+        "{:10.0f}\n",
+        r.id, r.map_p.x(), r.map_p.y(), sigma(0) * 1e3, sigma(1) * 1e3, r.anchor ? " (anchor)" : "",
+        r.times_seen, r.scans_seen, r.scans_expected, r.residual_rms * 1e3, r.normalised_rms,
+        r.surface_clearance * 1e3);
   }
   text += fmt::format("range bias (measured - true range): {:+.2f} mm, sigma {:.2f} mm\n", s.range_bias * 1e3,
                       s.range_bias_sigma * 1e3);
@@ -200,20 +197,10 @@ void write_survey_report(const std::string& dir, const DriveSurveyResult& survey
 
 int draw_survey_report(const std::string& dir, const std::string& truth_map) {
   // The script's #!/usr/bin/python3 is Debian's, where python3-matplotlib is installed.
-  std::vector<std::string> words = {shipped_path("tools/refloc-survey/survey_drive_plot.py"), "--report", dir,
-                                    "--out", dir + "/survey.png"};
-  if (!truth_map.empty()) words.insert(words.end(), {"--truth", truth_map});
-  std::vector<char*> argv;
-  for (auto& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  std::fflush(stdout);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return -1;
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::vector<std::string> argv = {shipped_path("tools/refloc-survey/survey_drive_plot.py"), "--report", dir,
+                                   "--out", dir + "/survey.png"};
+  if (!truth_map.empty()) argv.insert(argv.end(), {"--truth", truth_map});
+  return run_child_program(argv);
 }
 
 }  // namespace refloc

@@ -32,7 +32,7 @@ BundleProblem make_problem(const std::vector<DriveScan>& scans, const TrackerRes
           {static_cast<int>(k), landmark, static_cast<int>(d), det.laser_p_center, det.covariance});
     }
   }
-  for (const LandmarkTrack& t : front.landmarks) p.map_p_landmark.push_back(t.mean());
+  for (const LandmarkTrack& t : front.landmarks) p.map_p_landmark.push_back(t.mean(front.range_bias));
   return p;
 }
 
@@ -68,6 +68,7 @@ std::vector<BundleAnchor> place_anchors(const std::vector<SurveyAnchor>& anchors
 /// Returns the id of every landmark (0: not mapped).
 std::vector<int> fill_reflectors(const BundleResult& b, const TrackerResult& front,
                                  const std::vector<VisibilityCount>& visibility,
+                                 const std::vector<double>& clearance,
                                  const std::vector<SurveyAnchor>& anchors,
                                  const std::vector<int>& anchor_of_landmark, DriveSurveyResult& out) {
   std::vector<int> ids(b.landmarks.size(), 0);
@@ -94,7 +95,8 @@ std::vector<int> fill_reflectors(const BundleResult& b, const TrackerResult& fro
     r.residual_rms = l.residual_rms;
     r.normalised_rms = l.normalised_rms;
     r.view_span = front.landmarks[j].view_span();
-    r.front_end_scatter = front.landmarks[j].scatter();
+    r.front_end_scatter = front.landmarks[j].scatter(front.range_bias);
+    r.surface_clearance = clearance[j];
     out.reflectors.push_back(r);
     ids[j] = r.id;
   }
@@ -116,7 +118,8 @@ void fill_observations(const std::vector<DriveScan>& scans, const BundleProblem&
 Pose2 final_T_front(const TrackerResult& front, const BundleResult& b) {
   RigidFit2d fit;
   for (size_t j = 0; j < b.landmarks.size(); ++j)
-    if (b.landmarks[j].observations > 0) fit.add(front.landmarks[j].mean(), b.landmarks[j].map_p);
+    if (b.landmarks[j].observations > 0)
+      fit.add(front.landmarks[j].mean(front.range_bias), b.landmarks[j].map_p);
   Pose2 out;
   if (!fit.solve(out)) return Pose2{};
   return out;
@@ -126,14 +129,21 @@ void fill_rejected(const TrackerResult& front, const BundleResult& b, const Prom
                    const std::vector<std::string>& batch_reasons, DriveSurveyResult& out) {
   const Pose2 T = final_T_front(front, b);
   const auto add = [&](const LandmarkTrack& t, const std::string& reason) {
-    out.rejected.push_back(
-        {T * t.mean(), t.sightings(), t.view_span(), t.scatter(), t.seen_fraction(), reason});
+    out.rejected.push_back({T * t.mean(front.range_bias), t.sightings(), t.view_span(),
+                            t.scatter(front.range_bias), t.seen_fraction(), reason});
   };
   for (size_t j = 0; j < front.landmarks.size(); ++j)
     if (!batch_reasons[j].empty()) add(front.landmarks[j], batch_reasons[j]);
-  for (const LandmarkTrack& t : front.candidates) add(t, t.promotion_failure(rule));
+  for (const LandmarkTrack& t : front.candidates) add(t, t.promotion_failure(rule, front.range_bias));
   std::sort(out.rejected.begin(), out.rejected.end(),
             [](const RejectedTrack& a, const RejectedTrack& c) { return a.times_seen > c.times_seen; });
+}
+
+std::vector<Eigen::Vector2d> observed_landmarks(const BundleResult& b) {
+  std::vector<Eigen::Vector2d> out;
+  for (const BundleLandmark& l : b.landmarks)
+    if (l.observations > 0) out.push_back(l.map_p);
+  return out;
 }
 
 BundleResult solve(const BundleProblem& problem, const BundleOptions& options, DriveSurveyResult& out) {
@@ -143,23 +153,20 @@ BundleResult solve(const BundleProblem& problem, const BundleOptions& options, D
   return b;
 }
 
-/// Batches until the landmark checks change nothing (at most a few rounds); the occluders are
-/// traced from the poses of the first round.
+/// Batches until the residual and spacing checks change nothing (a few rounds at most), then
+/// the surface and visibility checks against the walls traced at those poses, once.
 BundleResult solve_and_check(const std::vector<DriveScan>& scans, const DriveSurveyConfig& config,
                              BundleProblem& problem, std::vector<std::string>& reasons,
-                             std::vector<VisibilityCount>& visibility, DriveSurveyResult& out) {
+                             DriveSurveyResult& out) {
   BundleOptions options = config.bundle;
   options.compute_covariance = false;
   BundleResult b = solve(problem, options, out);
   while (out.batch_runs < 5 && check_residuals_and_spacing(b, config.checks, problem, reasons))
     b = solve(problem, options, out);
-  const std::vector<MapOccluder> walls =
-      trace_occluders(scans, b.map_T_robot, problem.robot_T_laser, config.occluders);
-  if (check_visibility(b, walls, config.checks, problem, reasons, visibility)) {
+  const std::vector<MapOccluder> walls = trace_occluders(
+      scans, b.map_T_robot, problem.robot_T_laser, b.range_bias, observed_landmarks(b), config.occluders);
+  if (check_surface_and_visibility(b, walls, config.checks, problem, reasons))
     b = solve(problem, options, out);
-    check_visibility(b, walls, config.checks, problem, reasons,
-                     visibility);  // counts only: no second verdict
-  }
   return b;
 }
 
@@ -197,13 +204,22 @@ DriveSurveyResult run_drive_survey(const std::vector<DriveScan>& scans, const Po
   clock = std::chrono::steady_clock::now();
   BundleProblem problem = make_problem(scans, front, robot_T_laser, odometry_noise);
   std::vector<std::string> reasons(front.landmarks.size());
-  std::vector<VisibilityCount> visibility;
-  BundleResult b = solve_and_check(scans, config, problem, reasons, visibility, out);
+  BundleResult b = solve_and_check(scans, config, problem, reasons, out);
 
   std::vector<int> anchor_of_landmark;
-  if (!anchors.empty()) problem.anchors = place_anchors(anchors, b, config.anchor_gate, anchor_of_landmark);
+  // Anchors: the solution moved rigidly onto them first, so the anchored solve starts close.
+  Pose2 anchored_T_survey;
+  if (!anchors.empty()) {
+    problem.anchors = place_anchors(anchors, b, config.anchor_gate, anchor_of_landmark);
+    RigidFit2d fit;
+    for (const BundleAnchor& a : problem.anchors)
+      fit.add(b.landmarks[static_cast<size_t>(a.landmark)].map_p, a.map_p);
+    fit.solve(anchored_T_survey);
+  }
   problem.map_T_robot = b.map_T_robot;
-  for (size_t j = 0; j < b.landmarks.size(); ++j) problem.map_p_landmark[j] = b.landmarks[j].map_p;
+  for (Pose2& x : problem.map_T_robot) x = anchored_T_survey * x;
+  for (size_t j = 0; j < b.landmarks.size(); ++j)
+    problem.map_p_landmark[j] = anchored_T_survey * b.landmarks[j].map_p;
   b = solve(problem, config.bundle, out);
   out.batch_s = seconds_since(clock) - b.covariance_s;
   out.covariance_s = b.covariance_s;
@@ -213,10 +229,16 @@ DriveSurveyResult run_drive_survey(const std::vector<DriveScan>& scans, const Po
   out.range_bias_sigma = b.range_bias_sigma;
   out.chi2_per_dof = b.chi2_per_dof;
   out.observations_used = static_cast<int>(problem.observations.size());
-  const std::vector<int> ids = fill_reflectors(b, front, visibility, anchors, anchor_of_landmark, out);
+  out.occluders = trace_occluders(scans, out.map_T_robot, robot_T_laser, b.range_bias, observed_landmarks(b),
+                                  config.occluders);
+  const std::vector<VisibilityCount> visibility =
+      landmark_visibility(b, problem, out.occluders, config.checks);
+  const std::vector<double> clearance = surface_clearances(b, problem, out.occluders, config.checks);
+  const std::vector<int> ids =
+      fill_reflectors(b, front, visibility, clearance, anchors, anchor_of_landmark, out);
   fill_observations(scans, problem, b, ids, out);
   fill_rejected(front, b, config.tracker.promotion, reasons, out);
-  out.occluders = trace_occluders(scans, out.map_T_robot, robot_T_laser, config.occluders);
+
   add_warnings(out);
   return out;
 }

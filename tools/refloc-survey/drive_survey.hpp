@@ -51,6 +51,8 @@ struct SurveyedReflector {
   double normalised_rms = 0;
   double view_span = 0;          ///< [rad]
   double front_end_scatter = 0;  ///< [m]
+  /// Its centre in front of the nearest traced surface (drive_landmark_checks) [m]; NaN: none near.
+  double surface_clearance = 0;
 };
 
 /// Something bright the survey did not map, and why.
