@@ -17,7 +17,7 @@ inline constexpr size_t kMapHealthMaxCandidates = 1024;
 
 inline void to_message(const MapHealthReport& r, map_health_t& out) {
   out.utime = r.utime;
-  out.map_id = r.map_id.substr(0, 256);
+  out.map_id = r.map_id.substr(0, 4096);
   out.map_version = r.map_version;
   out.scans_used = r.scans_used;
   out.reflectors_ok = r.count(ReflectorHealth::kOk);
