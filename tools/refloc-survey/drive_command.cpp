@@ -5,6 +5,7 @@
 #include "drive_map_comparison.hpp"
 #include "drive_report.hpp"
 #include "drive_survey.hpp"
+#include "drive_truth_check.hpp"
 
 #include "common/guarded_main.hpp"
 #include "common/json_config.hpp"
@@ -15,6 +16,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 
 namespace refloc {
@@ -43,13 +45,27 @@ std::vector<DriveScan> read_scans(const DriveCommandOptions& o, const ExtractorS
 }
 
 /// Simulation: the map against the true one, printed and, with a report folder, written for the picture.
-void compare_with_truth(const DriveCommandOptions& o, const ReflectorMap& map) {
+void compare_with_truth(const DriveCommandOptions& o, const ReflectorMap& map,
+                        const DriveSurveyResult& survey, const Pose2& robot_T_laser) {
   const MapComparison c = compare_maps(map, load_reflector_map(o.truth_path));
   fmt::print("against {} (after a rigid alignment):\n{}", o.truth_path, comparison_text(c));
+  if (!o.truth_channel.empty()) {
+    const std::vector<TimedPose> truth = read_true_poses(o.log_path, o.truth_channel);
+    if (truth.empty()) throw ConfigError(o.log_path + ": no " + o.truth_channel + " (--truth-channel)");
+    fmt::print("{}", truth_check_text(check_detections_against_truth(survey, truth, c, robot_T_laser)));
+  }
   if (o.report_dir.empty()) return;
   std::ofstream out(o.report_dir + "/comparison.csv");
   out << comparison_csv(c);
   if (!out) throw ConfigError(o.report_dir + "/comparison.csv: cannot write");
+}
+
+void draw(const DriveCommandOptions& o) {
+  const int plot = draw_survey_report(o.report_dir, o.truth_path);
+  if (plot == 0)
+    fmt::print("report: {}/report.txt, picture {}/survey.png\n", o.report_dir, o.report_dir);
+  else
+    fmt::print(stderr, "refloc-survey: no picture (survey_drive_plot.py exit {})\n", plot);
 }
 
 }  // namespace
@@ -72,7 +88,12 @@ CLI::App* add_drive_command(CLI::App& app, DriveCommandOptions& o) {
                 "JSON file of 2+ reflectors with known map coordinates (fixes the frame)");
   c->add_option("--report", o.report_dir, "folder for the report's files and picture (survey.png)");
   c->add_option("--truth", o.truth_path, "simulation: the true map, compared and drawn");
+  c->add_option("--truth-channel", o.truth_channel,
+                "simulation, with --truth: also judge the detections at the true poses of this channel "
+                "(GROUND_TRUTH)")
+      ->needs("--truth");
   c->add_option("--map-id", o.map_id, "the map's id in its header")->capture_default_str();
+  c->add_flag("--force", o.force, "replace an existing --out");
   c->add_flag("!--no-range-bias", o.estimate_range_bias,
               "hold the LMS100's range bias at 0 instead of estimating it");
   return c;
@@ -80,6 +101,8 @@ CLI::App* add_drive_command(CLI::App& app, DriveCommandOptions& o) {
 
 int run_drive_command(const DriveCommandOptions& o) {
   const auto start = std::chrono::steady_clock::now();
+  if (!o.force && std::filesystem::exists(o.out_path))
+    throw ConfigError(o.out_path + ": exists; give --force to replace it");
   const RobotConfig robot = load_robot_config(o.robot_path);
   const ExtractorServiceConfig extractor = load_extractor_service_config(o.extractor_path);
   const std::vector<SurveyAnchor> anchors =
@@ -94,20 +117,19 @@ int run_drive_command(const DriveCommandOptions& o) {
       run_drive_survey(scans, robot.robot_T_laser, robot.odometry_noise, start_pose, anchors, config);
   const ReflectorMap map =
       surveyed_map(survey, survey.occluders, o.map_id, extractor.extractor.reflector_radius);
-  write_reflector_map(map, o.out_path);
   fmt::print("{}", survey_report_text(survey));
   fmt::print("{} occluders traced; log read and extracted in {:.2f} s; total {:.2f} s\n",
              survey.occluders.size(), read_s, seconds_since(start));
+  if (map.reflectors.size() < 3) {
+    fmt::print(stderr, "refloc-survey: no map written: {} reflectors surveyed, a map needs 3\n",
+               map.reflectors.size());
+    return kExitRuntimeFailure;
+  }
+  write_reflector_map(map, o.out_path);
   fmt::print("map written: {}\n", o.out_path);
   if (!o.report_dir.empty()) write_survey_report(o.report_dir, survey, map);
-  if (!o.truth_path.empty()) compare_with_truth(o, map);
-  if (!o.report_dir.empty()) {
-    const int plot = draw_survey_report(o.report_dir, o.truth_path);
-    if (plot == 0)
-      fmt::print("report: {}/report.txt, picture {}/survey.png\n", o.report_dir, o.report_dir);
-    else
-      fmt::print(stderr, "refloc-survey: no picture (survey_drive_plot.py exit {})\n", plot);
-  }
+  if (!o.truth_path.empty()) compare_with_truth(o, map, survey, robot.robot_T_laser);
+  if (!o.report_dir.empty()) draw(o);
   return 0;
 }
 

@@ -16,10 +16,12 @@ struct DriveCommandOptions {
   std::string out_path;
   std::string anchors_path;
   std::string report_dir;
-  std::string truth_path;  ///< simulation: drawn in the picture and compared (refloc-survey compare)
+  std::string truth_path;     ///< simulation: drawn in the picture and compared (refloc-survey compare)
+  std::string truth_channel;  ///< simulation: the true poses, to judge the detections themselves
   std::string map_id = "surveyed";
   std::vector<double> start_pose = {0.0, 0.0, 0.0};  ///< x_m, y_m, theta_rad
   bool estimate_range_bias = true;
+  bool force = false;  ///< replace an existing out_path
 };
 
 struct CompareCommandOptions {

@@ -6,6 +6,9 @@
 
 #include <refloc/laser_scan_t.hpp>
 #include <refloc/odometry_t.hpp>
+#include <refloc/pose2d_t.hpp>
+
+#include <algorithm>
 
 namespace refloc {
 
@@ -31,6 +34,18 @@ std::vector<DriveScan> read_drive_log(const std::string& path, const ExtractorSe
   std::vector<DriveScan> scans = builder.finish();
   scan_counts = builder.counts();
   return scans;
+}
+
+std::vector<TimedPose> read_true_poses(const std::string& path, const std::string& channel) {
+  std::vector<TimedPose> out;
+  pose2d_t m;
+  for_each_log_event(path, [&](const LogEventView& e) {
+    if (*e.channel != channel || !decode_lcm_bounded(e.data, e.size, m).ok) return;
+    out.push_back({m.utime, {m.x, m.y, m.theta}, Eigen::Matrix3d::Zero()});
+  });
+  std::stable_sort(out.begin(), out.end(),
+                   [](const TimedPose& a, const TimedPose& b) { return a.utime < b.utime; });
+  return out;
 }
 
 }  // namespace refloc

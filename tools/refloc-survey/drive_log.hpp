@@ -3,6 +3,7 @@
 // decodes lcmtypes. Scans and odometry go to DriveScanBuilder in log order, the order in
 // which the reflector_extractor service would have received them.
 
+#include "calibration_pairs.hpp"
 #include "drive_scan.hpp"
 
 #include <cstdint>
@@ -20,5 +21,8 @@ struct DriveLogCounts {
 std::vector<DriveScan> read_drive_log(const std::string& path, const ExtractorServiceConfig& extractor,
                                       const Pose2& robot_T_laser, const DriveScanOptions& options,
                                       DriveScanCounts& scan_counts, DriveLogCounts& log_counts);
+
+/// Simulation: the true map_T_robot series of channel (pose2d_t, GROUND_TRUTH), sorted by utime.
+std::vector<TimedPose> read_true_poses(const std::string& path, const std::string& channel);
 
 }  // namespace refloc

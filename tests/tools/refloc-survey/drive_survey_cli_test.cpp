@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <refloc/odometry_t.hpp>
+#include <refloc/pose2d_t.hpp>
 
 #include <filesystem>
 #include <regex>
@@ -48,6 +49,14 @@ const std::string& drive_log() {
         log.write("ODOMETRY", o.utime + 500, to_message(o));
       }
     }
+    for (size_t k = 0; k < d.scans.size(); ++k) {  // the truth at every scan, as robot_sim publishes it
+      pose2d_t truth{};
+      truth.utime = d.scans[k].utime;
+      truth.x = d.true_map_T_robot[k].x;
+      truth.y = d.true_map_T_robot[k].y;
+      truth.theta = d.true_map_T_robot[k].theta;
+      log.write("GROUND_TRUTH", truth.utime, truth);
+    }
     return p;
   }();
   return path;
@@ -62,7 +71,8 @@ TEST(SurveyDriveCli, WritesAFormat2MapWithCovariancesOccludersAndAReport) {
   const std::string map = testing::temp_path("map.json");
   const std::string report = testing::temp_path("report");
   const auto r =
-      testing::run_command(fmt::format("{} drive --log {} --out {} --start-pose {} --report {} --truth {}",
+      testing::run_command(fmt::format("{} drive --log {} --out {} --start-pose {} --report {} --truth {} "
+                                       "--truth-channel GROUND_TRUTH",
                                        kSurvey, drive_log(), map, start_pose(), report, testing::kDemoMap));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::smatch bias;
@@ -71,6 +81,7 @@ TEST(SurveyDriveCli, WritesAFormat2MapWithCovariancesOccludersAndAReport) {
       << r.output;
   EXPECT_NEAR(std::stod(bias[1]), 20.0, 3.0);  // the rendered LMS100's offset
   EXPECT_NE(r.output.find("map entries without a real reflector: 0"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("detections at the true poses"), std::string::npos) << r.output;
   const ReflectorMap m = load_reflector_map(map);
   EXPECT_EQ(m.info.format, 2);
   EXPECT_EQ(m.info.source, "surveyed");
@@ -103,6 +114,12 @@ TEST(SurveyDriveCli, BadInputExits2AndABadCommandLine64) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("/anchors: 2 or more"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(map));
+
+  // An existing map is not replaced without --force.
+  std::ofstream(map) << "{}";
+  r = testing::run_command(fmt::format("{} drive --log {} --out {}", kSurvey, drive_log(), map));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("give --force"), std::string::npos) << r.output;
 
   EXPECT_EQ(testing::run_command(kSurvey).exit_code, 64);
   EXPECT_EQ(testing::run_command(kSurvey + " drive --log " + drive_log()).exit_code, 64);  // no --out
