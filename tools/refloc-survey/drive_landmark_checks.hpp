@@ -28,10 +28,10 @@ struct LandmarkCheckConfig {
   double merge_distance = 0.13;
   /// A traced surface this close to a landmark's centre is the one it stands before [m] ...
   double surface_search = 0.25;
-  /// ... when at least this long [m] ...
-  double min_surface_length = 0.5;
+  /// ... when at least this long [m] (the traces of small pillars come out slanted) ...
+  double min_surface_length = 0.8;
   /// ... and facing the mean direction it was seen from within 90 deg minus this [rad].
-  double min_surface_view_angle = 45.0 * M_PI / 180.0;
+  double min_surface_view_angle = 15.0 * M_PI / 180.0;
   /// Its centre must lie at least this far in front of that surface, on the side it was seen
   /// from [m]: half the 60 mm radius, room for the surface's own tracing error.
   double min_surface_clearance = 0.03;
