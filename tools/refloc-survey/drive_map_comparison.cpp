@@ -117,6 +117,31 @@ ReflectorComparison compare_one(const MapReflector& m, const MapReflector& t, co
   return c;
 }
 
+/// scale_ppm and rms_after_scale of c from its matched pairs.
+void fit_scale(MapComparison& c) {
+  if (c.matched.size() < 2) return;
+  Eigen::Vector2d map_mean = Eigen::Vector2d::Zero(), truth_mean = Eigen::Vector2d::Zero();
+  for (const ReflectorComparison& r : c.matched) {
+    map_mean += r.truth_p_map;
+    truth_mean += r.truth_p;
+  }
+  const double n = static_cast<double>(c.matched.size());
+  map_mean /= n;
+  truth_mean /= n;
+  double ab = 0.0, aa = 0.0;
+  for (const ReflectorComparison& r : c.matched) {
+    ab += (r.truth_p_map - map_mean).dot(r.truth_p - truth_mean);
+    aa += (r.truth_p_map - map_mean).squaredNorm();
+  }
+  if (aa <= 0.0) return;
+  const double scale = ab / aa;  // truth = scale * map about the centroids
+  double sum2 = 0.0;
+  for (const ReflectorComparison& r : c.matched)
+    sum2 += (truth_mean + scale * (r.truth_p_map - map_mean) - r.truth_p).squaredNorm();
+  c.scale_ppm = (1.0 / scale - 1.0) * 1e6;  // the map's size against the truth's
+  c.rms_after_scale = std::sqrt(sum2 / n);
+}
+
 }  // namespace
 
 MapComparison compare_maps(const ReflectorMap& map, const ReflectorMap& truth,
@@ -153,6 +178,7 @@ MapComparison compare_maps(const ReflectorMap& map, const ReflectorMap& truth,
     out.matched.push_back(c);
   }
   if (!out.matched.empty()) out.rms = std::sqrt(sum2 / static_cast<double>(out.matched.size()));
+  fit_scale(out);
   for (size_t i = 0; i < map.reflectors.size(); ++i)
     if (!map_matched[i]) out.extra_map_ids.push_back(map.reflectors[i].id);
   for (size_t k = 0; k < truth.reflectors.size(); ++k)
@@ -173,6 +199,9 @@ std::string comparison_text(const MapComparison& c) {
   }
   text += fmt::format("matched {}; RMS error {:.2f} mm, worst {:.2f} mm (map id {})\n", c.matched.size(),
                       c.rms * 1e3, c.worst * 1e3, c.worst_map_id);
+  text += fmt::format(
+      "the map is {:+.0f} ppm the size of the truth; RMS error {:.2f} mm with that scale taken out\n",
+      c.scale_ppm, c.rms_after_scale * 1e3);
   if (c.with_covariance > 0)
     text += fmt::format("inside 3 sigma: {} of {} ({:.0f} %)\n", c.within_3_sigma, c.with_covariance,
                         100.0 * c.within_3_sigma / c.with_covariance);

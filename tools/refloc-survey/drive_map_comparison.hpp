@@ -42,6 +42,11 @@ struct MapComparison {
   double rms = 0.0;                          ///< over matched [m]
   double worst = 0.0;                        ///< [m]
   int worst_map_id = 0;
+  /// The map's scale against the truth (a similarity fit after the rigid one: the aligned map
+  /// scaled about the pairs' centroid) [1e-6], and the RMS left after it [m]: a survey whose
+  /// ranges read long comes out too large, every reflector pushed out from the middle.
+  double scale_ppm = 0.0;
+  double rms_after_scale = 0.0;
   int with_covariance = 0;
   int within_3_sigma = 0;  ///< of those with a covariance: Mahalanobis distance <= 3
 };

@@ -143,6 +143,21 @@ TEST(MapComparison, FindsTheAlignmentWithoutIdsAndNamesExtraAndMissingEntries) {
   EXPECT_EQ(c.within_3_sigma, 10);  // 4 mm at 1 mm sigma is outside
 }
 
+TEST(MapComparison, MeasuresTheScaleOfAMapThatIsTooLarge) {
+  ReflectorMap truth, map;
+  for (int id = 1; id <= 8; ++id) {
+    const Eigen::Vector2d p(2.5 * id, id % 2 == 0 ? 0.0 : 12.0);
+    truth.reflectors.push_back(reflector(id, p));
+    map.reflectors.push_back(
+        reflector(id, Eigen::Vector2d(10.0, 6.0) + 1.001 * (p - Eigen::Vector2d(10.0, 6.0))));
+  }
+  const MapComparison c = compare_maps(map, truth);
+  ASSERT_EQ(c.matched.size(), 8u);
+  EXPECT_NEAR(c.scale_ppm, 1000.0, 1.0);
+  EXPECT_LT(c.rms_after_scale, 1e-9);
+  EXPECT_GT(c.rms, 0.003);  // a rigid alignment leaves the scale as error
+}
+
 std::string write_temp(const std::string& name, const std::string& text) {
   const std::string path = ::testing::TempDir() + "refloc_survey_" + std::to_string(getpid()) + "_" + name;
   std::ofstream(path) << text;
