@@ -42,6 +42,8 @@ install(DIRECTORY docs/ DESTINATION docs)
 install(PROGRAMS tools/refloc-plot/refloc-plot.py DESTINATION tools/refloc-plot)
 install(FILES tools/refloc-plot/refloc_plot_data.py tools/refloc-plot/refloc_plot_draw.py
               tools/refloc-plot/refloc_plot_studies.py tools/refloc-plot/README.md DESTINATION tools/refloc-plot)
+# refloc-survey drive draws its report with this script (<root>/tools/refloc-survey).
+install(PROGRAMS tools/refloc-survey/survey_drive_plot.py DESTINATION tools/refloc-survey)
 install(FILES README.md DESTINATION .)
 if(EXISTS ${CMAKE_SOURCE_DIR}/LICENSE)
   install(FILES LICENSE DESTINATION .)
