@@ -51,13 +51,47 @@ bool HypothesisVerifier::refit(const std::vector<ReflectorDetection>& detections
   return fit.count() >= 3 && fit.solve(map_T_laser);
 }
 
+void HypothesisVerifier::drop_unsupported_pairs(const std::vector<ReflectorDetection>& detections) {
+  // A distractor beside a reflector (tape on a pillar, a metal plate) can join the fine gate
+  // only because the pose refitted with it bends towards it; judged against the pose the other
+  // pairs give on their own, it misses. With fewer than 4 pairs there is no such other pose.
+  const double gate2 = relocalization_.verify_fine_gate * relocalization_.verify_fine_gate;
+  while (associations_.size() >= 4) {
+    double worst2 = gate2;
+    size_t worst = associations_.size();
+    for (size_t i = 0; i < associations_.size(); ++i) {
+      RigidFit2d others;
+      for (size_t j = 0; j < associations_.size(); ++j) {
+        if (j == i) continue;
+        others.add(detections[static_cast<size_t>(associations_[j].detection_index)].laser_p_center,
+                   map_.reflectors[static_cast<size_t>(associations_[j].map_index)].map_p_center);
+      }
+      Pose2 map_T_laser;
+      if (!others.solve(map_T_laser)) continue;
+      const double r2 =
+          (map_T_laser * detections[static_cast<size_t>(associations_[i].detection_index)].laser_p_center -
+           map_.reflectors[static_cast<size_t>(associations_[i].map_index)].map_p_center)
+              .squaredNorm();
+      if (r2 > worst2) worst2 = r2, worst = i;
+    }
+    if (worst == associations_.size()) return;
+    for (size_t k = 0; k < predicted_.size(); ++k) {
+      if (predicted_[k].map_index == associations_[worst].map_index) predicted_matched_[k] = 0;
+    }
+    detection_used_[static_cast<size_t>(associations_[worst].detection_index)] = 0;
+    associations_.erase(associations_.begin() + static_cast<std::ptrdiff_t>(worst));
+  }
+}
+
 Verification HypothesisVerifier::verify(const Pose2& map_T_laser,
                                         const std::vector<ReflectorDetection>& detections) {
   Verification v;
   v.map_T_laser = map_T_laser;
   if (associate(map_T_laser, detections, relocalization_.verify_coarse_gate) >= 3)
     refit(detections, v.map_T_laser);
-  v.matched = associate(v.map_T_laser, detections, relocalization_.verify_fine_gate);
+  associate(v.map_T_laser, detections, relocalization_.verify_fine_gate);
+  drop_unsupported_pairs(detections);
+  v.matched = static_cast<int>(associations_.size());
   for (size_t k = 0; k < predicted_.size(); ++k) {
     if (predicted_[k].in_view && !predicted_matched_[k] &&
         predicted_[k].range <= relocalization_.missed_penalty_max_range &&

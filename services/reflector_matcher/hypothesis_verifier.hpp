@@ -57,6 +57,8 @@ class HypothesisVerifier {
     int detection_index;
   };
   bool refit(const std::vector<ReflectorDetection>& detections, Pose2& map_T_laser) const;
+  /// Removes, worst first, associations farther than the fine gate from the pose the others fit.
+  void drop_unsupported_pairs(const std::vector<ReflectorDetection>& detections);
 
   const ReflectorMap& map_;
   const MapGrid& grid_;
