@@ -4,6 +4,7 @@
 
 #include <refloc/heartbeat_t.hpp>
 #include <refloc/laser_scan_t.hpp>
+#include <refloc/map_health_t.hpp>
 #include <refloc/nav_goal_t.hpp>
 #include <refloc/nav_status_t.hpp>
 #include <refloc/odometry_t.hpp>
@@ -79,6 +80,17 @@ void numbers(const heartbeat_t& m, Visit&& v) {
 }
 template <class Visit>
 void numbers(const wheel_encoders_t&, Visit&&) {}
+template <class Visit>
+void numbers(const map_health_t& m, Visit&& v) {
+  for (const auto& r : m.reflectors) {
+    v("map_x", r.map_x), v("map_y", r.map_y), v("offset_x", r.offset_x), v("offset_y", r.offset_y);
+    v("offset_sigma_x", r.offset_sigma_x), v("offset_sigma_y", r.offset_sigma_y);
+  }
+  for (const auto& c : m.candidates) {
+    v("x", c.x), v("y", c.y), v("sigma_x", c.sigma_x), v("sigma_y", c.sigma_y);
+    v("viewpoint_spread", c.viewpoint_spread);
+  }
+}
 
 /// The first non-finite field of m ("" when all are finite).
 template <class Message>
