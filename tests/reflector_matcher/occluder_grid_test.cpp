@@ -60,7 +60,7 @@ TEST(OccluderGrid, AgreesWithTestingEverySegmentOnTwentyThousandRandomLines) {
                                            : a + Eigen::Vector2d(len(rng), len(rng));
     occluders.push_back(polyline({i % 3 == 1 ? Eigen::Vector2d(std::round(a.x()), a.y()) : a, b}));
   }
-  const OccluderGrid grid(occluders);
+  const OccluderGrid grid(occluders);  // 2 m cells
   const OccluderGrid half_metre(occluders, 0.5);
   const OccluderGrid one_cell(occluders, 1e9);
   int blocked = 0, disagreements = 0;

@@ -182,7 +182,8 @@ void run_global_relocalization(benchmark::State& state, const Scenario& s, int c
                                config.relocalization.min_triangle_side,
                                config.relocalization.max_triangle_side,
                                static_cast<size_t>(config.relocalization.max_index_triangles));
-  const OccluderGrid occluders(s.map.occluders, cell_cm > 0 ? cell_cm / 100.0 : 1.0);
+  const OccluderGrid occluders(s.map.occluders,
+                               cell_cm > 0 ? cell_cm / 100.0 : OccluderGrid::kDefaultCellSize);
   GlobalRelocalizer relocalizer(s.map, grid, index, config.relocalization, config.sensor, config.min_matches,
                                 &occluders);
   MatchResult result;
@@ -265,6 +266,16 @@ void BM_BuildMatcher(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_BuildMatcher)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
+
+/// The occluder grid of n / 2 racks (2 n segments) over BM_GlobalRelocalization's square for n.
+void BM_BuildOccluderGrid(benchmark::State& state) {
+  const Scenario s = make_rack_scenario(static_cast<int>(state.range(0)), true, 10);
+  for (auto _ : state) {
+    OccluderGrid grid(s.map.occluders);
+    benchmark::DoNotOptimize(grid.segment_count());
+  }
+}
+BENCHMARK(BM_BuildOccluderGrid)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace refloc
