@@ -22,7 +22,24 @@ struct CircleFit {
   Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();  ///< of center [m^2]
   double radius_sigma = 0.0;  ///< standard deviation of radius, free-radius fits only [m]
   double chi2 = 0.0;          ///< sum of weighted squared residuals at the solution
+  /// Known-radius fits with the spot model: chi2 of the central-ray fit it started from (the
+  /// shape tests take the smaller of the two, so a sensor whose echoes follow the central ray
+  /// more than our spot model keeps its recall); otherwise equal to chi2.
+  double central_ray_chi2 = 0.0;
   int iterations = 0;
+};
+
+/// The laser spot the fits model: a beam's echo off a cylinder is the spot-weighted mean range
+/// of the part of the spot on the cylinder, not the range of its central ray. Past ~6 m the
+/// LMS100's spot (15 mrad) is as wide as a 120 mm reflector, every beam's echo averages the
+/// curved face, and a central-ray model puts the centre up to 10 mm too far (emulator, 8-15 m;
+/// extractor README "Beam spot"). The spot is exit_diameter + range * divergence wide with a
+/// Gaussian profile (1/e^2 at its rim), integrated over the chord it covers.
+struct EchoSpotModel {
+  bool enabled = true;             ///< false: every beam is its central ray
+  double divergence_rad = 0.015;   ///< full angle [rad] (LMS100 datasheet: 15 mrad)
+  double exit_diameter_m = 0.008;  ///< spot diameter at the optics cover [m]
+  bool applies() const { return enabled && (divergence_rad > 0.0 || exit_diameter_m > 0.0); }
 };
 
 struct KnownRadiusFitConfig {
@@ -32,6 +49,7 @@ struct KnownRadiusFitConfig {
   /// and mixed pixels hurt most, and where the linearisation fails first, so their leverage
   /// is capped (cos 53 deg; 0.6 gave NEES ~2 over 1-8 m in circle_fit_test).
   double min_incidence_cos = 0.6;
+  EchoSpotModel spot;
 };
 
 /// Kasa algebraic least-squares circle; false for fewer than 3 points or collinear points.
@@ -50,10 +68,13 @@ bool fit_circle_known_radius(const std::vector<FitBeam>& beams, double radius,
 bool fit_circle_free_radius(const std::vector<FitBeam>& beams, const Eigen::Vector2d& center, double radius,
                             const KnownRadiusFitConfig& config, CircleFit& out);
 
-/// Range residual of one beam against a circle, with the incidence floor [m]; also its
-/// derivative with respect to the centre (d residual / d radius = -1 / cos).
+/// Range residual of one beam against a circle [m], negative when the echo lies beyond the
+/// predicted surface; also its derivatives with respect to the centre and the radius. With the
+/// spot model on: predicted spot-mean range - measured range (the spot's rays that meet the
+/// circle, integrated). Without it, or when no ray of the spot meets the circle:
+/// the linearised (|p - c| - radius) / cos(incidence), cos floored at min_incidence_cos.
 double range_residual(const FitBeam& beam, const Eigen::Vector2d& center, double radius,
-                      double min_incidence_cos, Eigen::Vector2d* d_center = nullptr,
+                      const KnownRadiusFitConfig& config, Eigen::Vector2d* d_center = nullptr,
                       double* d_radius = nullptr);
 
 }  // namespace refloc

@@ -144,9 +144,13 @@ void ReflectorExtractor::process_cluster_default(const BeamTable& table, const B
     ++stats_.rejected_fit_failed;
     return;
   }
+  // The radius check is a shape test and, like the residual test, must not depend on how
+  // closely the sensor follows our spot model: it fits central rays.
+  KnownRadiusFitConfig shape_fit = config_.fit;
+  shape_fit.spot.enabled = false;
   CircleFit free_fit;
   const bool have_free = static_cast<int>(beams_.size()) >= config_.roundness.min_beams_for_radius_check &&
-                         fit_circle_free_radius(beams_, fit.center, fit.radius, config_.fit, free_fit);
+                         fit_circle_free_radius(beams_, fit.center, fit.radius, shape_fit, free_fit);
   const double flat_chi2 = flat_surface_chi2(beams_, config_.fit.min_incidence_cos);
   switch (check_known_radius_roundness(beams_, fit, have_free ? &free_fit : nullptr, flat_chi2,
                                        config_.roundness)) {
@@ -181,7 +185,7 @@ void ReflectorExtractor::process_cluster_default(const BeamTable& table, const B
     const double sigma = config_.angle_sigma * range;
     fit.covariance += sigma * sigma * across * across.transpose();
   }
-  emit(table, cluster, fit, mean_abs_range_residual(beams_, fit, config_.fit.min_incidence_cos),
+  emit(table, cluster, fit, mean_abs_range_residual(beams_, fit, config_.fit),
        have_free ? free_fit.radius : fit.radius);
 }
 

@@ -165,6 +165,19 @@ ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& c) {
                                       "floor on cos(incidence) in the fits' residuals: caps the weight of "
                                       "near-grazing beams (0.6 = 53 deg)"},
                                      e.fit.min_incidence_cos, 0.01, 1.0);
+  EchoSpotModel& spot = e.fit.spot;
+  spot.divergence_rad = c.number({"/default/fit/spot/divergence_rad", "rad",
+                                  "full angle of the laser spot the centre fit models (LMS100: 0.015): a "
+                                  "beam's echo is the spot-weighted mean range over the cylinder's face"},
+                                 spot.divergence_rad, 0.0, 0.2);
+  spot.exit_diameter_m = c.number({"/default/fit/spot/exit_diameter_m", "m",
+                                   "spot diameter at the optics cover; the spot is this + range * "
+                                   "divergence_rad wide"},
+                                  spot.exit_diameter_m, 0.0, 0.1);
+  spot.enabled = c.boolean({"/default/fit/spot/enabled", "",
+                            "model the beam spot in the centre fit; false fits each beam's central ray "
+                            "(reflector centres up to ~10 mm too far beyond 8 m with an LMS100)"},
+                           spot.enabled);
   KnownRadiusRoundnessConfig& r = e.roundness;
   r.lateral_margin = c.number({"/default/roundness/lateral_margin_m", "m",
                                "a cluster wider across the line of sight than the diameter plus this is no "

@@ -58,9 +58,11 @@ bool paper_polar_centre(const std::vector<FitBeam>& beams, double radius, int dr
 }
 
 bool paper_known_radius_centre(const std::vector<FitBeam>& beams, double radius, CircleFit& out) {
-  // An incidence floor of 1 makes range_residual the plain geometric |p - c| - radius.
+  // An incidence floor of 1 and no spot model make range_residual the plain geometric
+  // |p - c| - radius: the paper's reading.
   KnownRadiusFitConfig geometric;
   geometric.min_incidence_cos = 1.0;
+  geometric.spot.enabled = false;
   return fit_circle_known_radius(beams, radius, geometric, out);
 }
 

@@ -66,6 +66,6 @@ double lateral_extent(const std::vector<FitBeam>& beams, const Eigen::Vector2d& 
 
 /// Mean |range residual| of the beams against a fitted circle [m].
 double mean_abs_range_residual(const std::vector<FitBeam>& beams, const CircleFit& fit,
-                               double min_incidence_cos);
+                               const KnownRadiusFitConfig& config);
 
 }  // namespace refloc
