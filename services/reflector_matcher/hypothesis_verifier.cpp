@@ -2,7 +2,11 @@
 
 #include "reflector_matcher/rigid_fit_2d.hpp"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace refloc {
 
@@ -75,12 +79,84 @@ void HypothesisVerifier::drop_unsupported_pairs(const std::vector<ReflectorDetec
       if (r2 > worst2) worst2 = r2, worst = i;
     }
     if (worst == associations_.size()) return;
-    for (size_t k = 0; k < predicted_.size(); ++k) {
-      if (predicted_[k].map_index == associations_[worst].map_index) predicted_matched_[k] = 0;
-    }
-    detection_used_[static_cast<size_t>(associations_[worst].detection_index)] = 0;
-    associations_.erase(associations_.begin() + static_cast<std::ptrdiff_t>(worst));
+    remove_association(worst);
   }
+}
+
+void HypothesisVerifier::remove_association(size_t index) {
+  for (size_t k = 0; k < predicted_.size(); ++k) {
+    if (predicted_[k].map_index == associations_[index].map_index) predicted_matched_[k] = 0;
+  }
+  detection_used_[static_cast<size_t>(associations_[index].detection_index)] = 0;
+  associations_.erase(associations_.begin() + static_cast<std::ptrdiff_t>(index));
+}
+
+double chi_square_bound(int dof, double sigmas) {
+  const double k = static_cast<double>(std::max(dof, 1));
+  const double a = 2.0 / (9.0 * k);
+  const double c = 1.0 - a + sigmas * std::sqrt(a);
+  return k * c * c * c;
+}
+
+double HypothesisVerifier::fit_chi2(const std::vector<ReflectorDetection>& detections,
+                                    const Pose2& map_T_laser) const {
+  const Eigen::Matrix2d rotation = map_T_laser.rotation();
+  double chi2 = 0.0;
+  for (size_t i = 0; i < associations_.size(); ++i) {
+    const ReflectorDetection& d = detections[static_cast<size_t>(associations_[i].detection_index)];
+    const MapReflector& r = map_.reflectors[static_cast<size_t>(associations_[i].map_index)];
+    const Eigen::Matrix2d map_cov =
+        r.map_cov_center ? *r.map_cov_center
+                         : Eigen::Matrix2d(relocalization_.map_sigma * relocalization_.map_sigma *
+                                           Eigen::Matrix2d::Identity());
+    const Eigen::Vector2d line_of_sight = rotation * d.laser_p_center.normalized();
+    const double bias2 = relocalization_.range_bias_sigma * relocalization_.range_bias_sigma;
+    const Eigen::Matrix2d cov = rotation * d.covariance * rotation.transpose() + map_cov +
+                                bias2 * line_of_sight * line_of_sight.transpose();
+    const Eigen::Vector2d e = map_T_laser * d.laser_p_center - r.map_p_center;
+    const double term = e.dot(cov.ldlt().solve(e));
+    if (!std::isfinite(term)) continue;
+    chi2 += term;
+  }
+  return chi2;
+}
+
+int HypothesisVerifier::drop_inconsistent_pairs(const std::vector<ReflectorDetection>& detections,
+                                                Pose2& map_T_laser) {
+  // Each pair can lie within the fine gate while together they fit no rigid pose: two of three
+  // reflectors moved by 0.3 m, matched as if in place, leave ~0.1 m residuals that the
+  // detections' centimetre covariances call impossible. The test is the fit's chi-square
+  // against its dof = 2 x pairs - 3.
+  if (relocalization_.fit_consistency_sigmas <= 0.0) return 0;
+  int dropped = 0;
+  while (associations_.size() >= 3) {
+    const double chi2 = fit_chi2(detections, map_T_laser);
+    const int dof = 2 * static_cast<int>(associations_.size()) - 3;
+    if (chi2 <= chi_square_bound(dof, relocalization_.fit_consistency_sigmas)) return dropped;
+    if (associations_.size() == 3) {
+      dropped += 3;
+      while (!associations_.empty()) remove_association(associations_.size() - 1);
+      return dropped;
+    }
+    // Drop the pair whose absence leaves the most consistent fit (the largest term of the
+    // all-pairs fit may belong to a good pair the bad one pulled away).
+    size_t drop = 0;
+    double best_chi2 = std::numeric_limits<double>::infinity();
+    const std::vector<Association> all = associations_;
+    for (size_t i = 0; i < all.size(); ++i) {
+      associations_ = all;
+      associations_.erase(associations_.begin() + static_cast<std::ptrdiff_t>(i));
+      Pose2 pose = map_T_laser;
+      if (!refit(detections, pose)) continue;
+      const double c = fit_chi2(detections, pose);
+      if (c < best_chi2) best_chi2 = c, drop = i;
+    }
+    associations_ = all;
+    remove_association(drop);
+    ++dropped;
+    refit(detections, map_T_laser);
+  }
+  return dropped;
 }
 
 Verification HypothesisVerifier::verify(const Pose2& map_T_laser,
@@ -91,6 +167,8 @@ Verification HypothesisVerifier::verify(const Pose2& map_T_laser,
     refit(detections, v.map_T_laser);
   associate(v.map_T_laser, detections, relocalization_.verify_fine_gate);
   drop_unsupported_pairs(detections);
+  Pose2 fitted = v.map_T_laser;
+  if (refit(detections, fitted)) v.inconsistent = drop_inconsistent_pairs(detections, fitted);
   v.matched = static_cast<int>(associations_.size());
   for (size_t k = 0; k < predicted_.size(); ++k) {
     if (predicted_[k].in_view && !predicted_matched_[k] &&

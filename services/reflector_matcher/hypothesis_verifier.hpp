@@ -31,7 +31,12 @@ struct Verification {
   int matched = 0;      ///< detections explained
   int missed = 0;       ///< reflectors expected in view, not shadowed or occluded, not seen
   int unexplained = 0;  ///< detections no reflector explains
+  int inconsistent = 0;  ///< pairs dropped (or all, for 3) by the fit consistency test
 };
+
+/// Upper bound of a chi-square with dof degrees of freedom at `sigmas` standard normal
+/// deviations (Wilson-Hilferty: within ~1 % of the exact quantile for dof >= 3).
+double chi_square_bound(int dof, double sigmas);
 
 class HypothesisVerifier {
  public:
@@ -59,6 +64,11 @@ class HypothesisVerifier {
   bool refit(const std::vector<ReflectorDetection>& detections, Pose2& map_T_laser) const;
   /// Removes, worst first, associations farther than the fine gate from the pose the others fit.
   void drop_unsupported_pairs(const std::vector<ReflectorDetection>& detections);
+  /// Chi-square of the associations' residuals at map_T_laser.
+  double fit_chi2(const std::vector<ReflectorDetection>& detections, const Pose2& map_T_laser) const;
+  /// The consistency test (fit_consistency_sigmas); refits map_T_laser; pairs dropped.
+  int drop_inconsistent_pairs(const std::vector<ReflectorDetection>& detections, Pose2& map_T_laser);
+  void remove_association(size_t index);
 
   const ReflectorMap& map_;
   const MapGrid& grid_;

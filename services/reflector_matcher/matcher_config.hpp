@@ -57,6 +57,17 @@ struct RelocalizationConfig {
   /// a 120 mm cylinder spans fewer than 2 beams beyond ~7 m, which the extractor may reject [m].
   double missed_penalty_max_range = 8.0;
   double unexplained_penalty = 0.25;    ///< score lost per detection no map reflector explains [-]
+  /// fit_consistency_sigmas: the pairs' residuals after the rigid fit, as a chi-square with the
+  /// detections' covariances (+ map_sigma), may exceed its mean by at most this many of its
+  /// standard deviations (Wilson-Hilferty); worse pairs are dropped while 4 or more remain,
+  /// and a 3-pair hypothesis that still fails explains nothing. 0 = off [-].
+  double fit_consistency_sigmas = 3.5;
+  /// map_sigma_m: position uncertainty of a map reflector without a survey covariance [m]
+  double map_sigma = 0.005;
+  /// range_bias_sigma_m: the test allows each detection this much more error along its line
+  /// of sight: the LMS100's systematic range error (SICK: up to +-30 mm), which the matcher does
+  /// not estimate (pose_solver does) [m]
+  double range_bias_sigma = 0.03;
   double min_explained_fraction = 0.6;  ///< of the detections, for a global OK [-]
   /// min_score: a global hypothesis scoring less is no fix [-]. Off by default (-1000): a floor
   /// of 2.0 removed the rare wrong OK from scratch (1 in 40,000 rendered demo-hall scans) but

@@ -161,6 +161,22 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
   m.relocalization.unexplained_penalty = config.number(
       {"/relocalization/unexplained_penalty", "", "score lost per detection no map reflector explains"},
       m.relocalization.unexplained_penalty, 0.0, 10.0);
+  m.relocalization.fit_consistency_sigmas = config.number(
+      {"/relocalization/fit_consistency_sigmas", "",
+       "the matched pairs' residuals after the rigid fit (chi-square with the detections' covariance and "
+       "map_sigma_m) may exceed the chi-square's mean by this many standard deviations; worse pairs "
+       "are dropped while 4 remain, a 3-pair match that still fails explains nothing (two reflectors "
+       "moved 0.3 m matched as if in place); 0: off"},
+      m.relocalization.fit_consistency_sigmas, 0.0, 100.0);
+  m.relocalization.map_sigma = config.number(
+      {"/relocalization/map_sigma_m", "m",
+       "position uncertainty of a map reflector without a survey covariance (the consistency test)"},
+      m.relocalization.map_sigma, 0.0, 1.0);
+  m.relocalization.range_bias_sigma = config.number(
+      {"/relocalization/range_bias_sigma_m", "m",
+       "extra error the consistency test allows along each detection's line of sight: the sensor's "
+       "systematic range error (LMS100: up to +-30 mm), which pose_solver, not the matcher, estimates"},
+      m.relocalization.range_bias_sigma, 0.0, 1.0);
   m.relocalization.min_explained_fraction =
       config.number({"/relocalization/min_explained_fraction", "",
                      "a global OK, and a kept tracked association, must explain at least this fraction of "
