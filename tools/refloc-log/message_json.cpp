@@ -11,6 +11,9 @@
 #include <refloc/pose2d_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 #include <refloc/reflector_match_t.hpp>
+#include <refloc/map_candidate_t.hpp>
+#include <refloc/map_health_t.hpp>
+#include <refloc/map_reflector_health_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
 #include <refloc/reflector_t.hpp>
 #include <refloc/twist_t.hpp>
@@ -180,6 +183,48 @@ OrderedJson to_json(const reflector_matches_t& m) {
           {"matches", std::move(matches)}};
 }
 
+OrderedJson to_json(const map_reflector_health_t& m) {
+  return {{"id", m.id},
+          {"state", static_cast<int>(m.state)},
+          {"map_x", m.map_x},
+          {"map_y", m.map_y},
+          {"seen", m.seen},
+          {"expected_missing", m.expected_missing},
+          {"offset_x", m.offset_x},
+          {"offset_y", m.offset_y},
+          {"offset_sigma_x", m.offset_sigma_x},
+          {"offset_sigma_y", m.offset_sigma_y}};
+}
+
+OrderedJson to_json(const map_candidate_t& m) {
+  return {{"x", m.x},
+          {"y", m.y},
+          {"sigma_x", m.sigma_x},
+          {"sigma_y", m.sigma_y},
+          {"sightings", m.sightings},
+          {"viewpoint_spread", m.viewpoint_spread},
+          {"moved_reflector_id", m.moved_reflector_id}};
+}
+
+OrderedJson to_json(const map_health_t& m) {
+  OrderedJson reflectors = OrderedJson::array();
+  for (const auto& r : m.reflectors) reflectors.push_back(to_json(r));
+  OrderedJson candidates = OrderedJson::array();
+  for (const auto& c : m.candidates) candidates.push_back(to_json(c));
+  return {{"utime", m.utime},
+          {"map_id", m.map_id},
+          {"map_version", m.map_version},
+          {"scans_used", m.scans_used},
+          {"reflectors_ok", m.reflectors_ok},
+          {"reflectors_missing", m.reflectors_missing},
+          {"reflectors_moved", m.reflectors_moved},
+          {"reflectors_unconfirmed", m.reflectors_unconfirmed},
+          {"nreflectors", m.nreflectors},
+          {"reflectors", std::move(reflectors)},
+          {"ncandidates", m.ncandidates},
+          {"candidates", std::move(candidates)}};
+}
+
 OrderedJson to_json(const twist_t& m) {
   return {{"utime", m.utime}, {"vx", m.vx}, {"vy", m.vy}, {"wz", m.wz}};
 }
@@ -205,6 +250,13 @@ reflector_matches_t prototype_message() {
   m.matches.resize(1);
   return m;
 }
+template <>
+map_health_t prototype_message() {
+  map_health_t m{};
+  m.reflectors.resize(1);
+  m.candidates.resize(1);
+  return m;
+}
 
 }  // namespace
 
@@ -226,6 +278,9 @@ void MessageDecoder::add(bool utime_first) {
 
 MessageDecoder::MessageDecoder() {
   add<heartbeat_t>(true);
+  add<map_candidate_t>(false);
+  add<map_health_t>(true);
+  add<map_reflector_health_t>(false);
   add<laser_scan_t>(true);
   add<nav_goal_t>(true);
   add<nav_status_t>(true);

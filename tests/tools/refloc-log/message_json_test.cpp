@@ -6,7 +6,11 @@
 
 #include <gtest/gtest.h>
 #include <algorithm>
+#include <filesystem>
 #include <refloc/heartbeat_t.hpp>
+#include <refloc/map_candidate_t.hpp>
+#include <refloc/map_health_t.hpp>
+#include <refloc/map_reflector_health_t.hpp>
 #include <refloc/laser_scan_t.hpp>
 #include <refloc/nav_goal_t.hpp>
 #include <refloc/nav_status_t.hpp>
@@ -40,10 +44,17 @@ void expect_type_decodes(const MessageDecoder& decoder, const std::string& name)
   EXPECT_STREQ(decoder.type_name(bytes.data(), bytes.size()), name.c_str());
 }
 
-TEST(MessageDecoder, KnowsAllTwelveRefLocTypes) {
+TEST(MessageDecoder, KnowsEveryRefLocType) {
   const MessageDecoder d;
-  EXPECT_EQ(d.type_names().size(), 12u);
+  // One per .lcm file: MAP_HEALTH was logged for a while before refloc-log could decode it.
+  size_t lcm_files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(REFLOC_SOURCE_DIR "/lcmtypes"))
+    lcm_files += e.path().extension() == ".lcm";
+  EXPECT_EQ(d.type_names().size(), lcm_files);
   expect_type_decodes<heartbeat_t>(d, "heartbeat_t");
+  expect_type_decodes<map_candidate_t>(d, "map_candidate_t");
+  expect_type_decodes<map_health_t>(d, "map_health_t");
+  expect_type_decodes<map_reflector_health_t>(d, "map_reflector_health_t");
   expect_type_decodes<laser_scan_t>(d, "laser_scan_t");
   expect_type_decodes<nav_goal_t>(d, "nav_goal_t");
   expect_type_decodes<nav_status_t>(d, "nav_status_t");
