@@ -11,13 +11,6 @@
 namespace refloc {
 namespace {
 
-// The larger standard deviation of a 2x2 covariance: its largest eigenvalue's root [m].
-double major_sigma(const Eigen::Matrix2d& c) {
-  const double mean = 0.5 * (c(0, 0) + c(1, 1));
-  const double half_difference = 0.5 * (c(0, 0) - c(1, 1));
-  return std::sqrt(std::max(0.0, mean + std::hypot(half_difference, c(0, 1))));
-}
-
 // Covariance of the mean of n points with the given scatter, plus the floor on each axis [m^2].
 Eigen::Matrix2d mean_covariance(const Eigen::Matrix2d& scatter, int n, double floor) {
   return scatter / n + floor * floor * Eigen::Matrix2d::Identity();
@@ -31,6 +24,29 @@ void MapEvidence::PointSums::add(const Eigen::Vector2d& p) {
   if (n++ == 0) origin = p;
   sum += p - origin;
   sum_outer += (p - origin) * (p - origin).transpose();
+}
+
+void MapEvidence::RecentPoints::add(const Eigen::Vector2d& p) {
+  ring[static_cast<size_t>(next)] = p;
+  next = (next + 1) % kSize;
+  n = std::min(n + 1, kSize);
+}
+
+double MapEvidence::RecentPoints::robust_sigma() const {
+  if (n == 0) return 0.0;
+  std::array<double, kSize> values{};
+  const auto median = [&](int count) {
+    const auto middle = values.begin() + count / 2;
+    std::nth_element(values.begin(), middle, values.begin() + count);
+    return *middle;
+  };
+  Eigen::Vector2d center;
+  for (int axis = 0; axis < 2; ++axis) {
+    for (int i = 0; i < n; ++i) values[static_cast<size_t>(i)] = ring[static_cast<size_t>(i)][axis];
+    center[axis] = median(n);
+  }
+  for (int i = 0; i < n; ++i) values[static_cast<size_t>(i)] = (ring[static_cast<size_t>(i)] - center).norm();
+  return median(n) / 1.1774;
 }
 
 Eigen::Matrix2d MapEvidence::PointSums::covariance() const {
@@ -119,8 +135,11 @@ void MapEvidence::add_unmapped(const Eigen::Vector2d& map_p, const Eigen::Vector
   Cluster& c = *nearest;
   const Eigen::Vector2d to_laser = map_p_laser - map_p;
   const double range = to_laser.norm();
+  const Eigen::Vector2d front =
+      range > 0.0 ? Eigen::Vector2d(map_p + config_.candidate_radius / range * to_laser) : map_p;
   c.points.add(map_p);
-  c.fronts.add(range > 0.0 ? Eigen::Vector2d(map_p + config_.candidate_radius / range * to_laser) : map_p);
+  c.recent_points.add(map_p);
+  c.recent_fronts.add(front);
   c.viewpoint_spread = std::max(c.viewpoint_spread, (map_p_laser - c.first_viewpoint).norm());
   const double turn = angle_diff(std::atan2(to_laser.y(), to_laser.x()), c.first_view_angle);
   c.view_angle_low = std::min(c.view_angle_low, turn);
@@ -133,8 +152,11 @@ bool MapEvidence::is_candidate(const Cluster& c) const {
       c.viewpoint_spread < config_.candidate_min_viewpoint_spread ||
       c.view_angle_high - c.view_angle_low < config_.candidate_min_view_angle)
     return false;
-  const double scatter = major_sigma(c.points.covariance());
-  return scatter <= config_.candidate_max_scatter && scatter < major_sigma(c.fronts.covariance());
+  // Robust spreads of the last 64 sightings: a handful of strays (a scan placed with a pose a
+  // few centimetres off while turning) inflated the plain standard deviation of an added wall
+  // reflector to > 2 cm while its centre was right within 1 mm, and it was never proposed.
+  const double scatter = c.recent_points.robust_sigma();
+  return scatter <= config_.candidate_max_scatter && scatter < c.recent_fronts.robust_sigma();
 }
 
 ReflectorHealthEntry MapEvidence::entry(size_t index) const {

@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -69,8 +70,21 @@ class MapEvidence {
     Eigen::Vector2d unseen_from = Eigen::Vector2d::Zero();
     double unseen_spread = -1.0;  ///< -1: seen since (or never expected)
   };
+  /// The last sightings of a cluster, for a spread that a few stray ones do not inflate.
+  struct RecentPoints {
+    static constexpr int kSize = 64;
+    std::array<Eigen::Vector2d, kSize> ring{};
+    int n = 0;     ///< filled entries
+    int next = 0;  ///< where the next one goes
+    void add(const Eigen::Vector2d& p);
+    /// Robust standard deviation per axis of the points (median distance from the
+    /// component-wise median / 1.1774, the Rayleigh median of a 2-D Gaussian) [m].
+    double robust_sigma() const;
+  };
   struct Cluster {
     PointSums points;
+    RecentPoints recent_points;
+    RecentPoints recent_fronts;
     /// The sightings moved candidate_radius toward the laser: where a flat strip's face would be.
     /// A cylinder's centres scatter less than these, a strip's more.
     PointSums fronts;

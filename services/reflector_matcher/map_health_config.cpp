@@ -99,8 +99,8 @@ void parse_candidates(const JsonConfig& c, MapHealthConfig& m) {
       m.candidate_radius, 5.0, "0 could not tell a strip from a cylinder");
   m.candidate_max_scatter = c.positive_number(
       {"/map_health/candidate_max_scatter_m", "m",
-       "a cluster whose sightings scatter more (std dev about their mean, larger axis) is no single fixed "
-       "reflector"},
+       "a cluster whose last 64 sightings scatter more (robust std dev: median distance from their "
+       "median / 1.18) is no single fixed reflector"},
       m.candidate_max_scatter, 1.0, "0 would refuse every candidate");
   m.max_clusters = count(c,
                          {"/map_health/max_clusters", "count",

@@ -51,7 +51,7 @@ struct MapHealthConfig {
   /// so the face test (fronts in map_evidence.hpp) can tell a cylinder from a flat face [rad].
   double candidate_min_view_angle = 20.0 * M_PI / 180.0;
   double candidate_radius = 0.06;  ///< candidate_radius_m: the radius new reflectors are assumed to have [m]
-  /// candidate_max_scatter_m: a cluster whose sightings scatter more (std dev about their mean)
+  /// candidate_max_scatter_m: a cluster whose last 64 sightings scatter more (robust std dev)
   /// is no single fixed reflector [m]. Tape narrower than a cylinder's diameter does not scatter:
   /// the known-radius circle fitted to a straight strip sits on the strip's perpendicular bisector
   /// from any viewpoint; only the map's occluders (a centre behind a face) reject it.
