@@ -11,6 +11,13 @@
 namespace refloc {
 namespace {
 
+// The larger standard deviation of a 2x2 covariance: its largest eigenvalue's root [m].
+double major_sigma(const Eigen::Matrix2d& c) {
+  const double mean = 0.5 * (c(0, 0) + c(1, 1));
+  const double half_difference = 0.5 * (c(0, 0) - c(1, 1));
+  return std::sqrt(std::max(0.0, mean + std::hypot(half_difference, c(0, 1))));
+}
+
 // Covariance of the mean of n points with the given scatter, plus the floor on each axis [m^2].
 Eigen::Matrix2d mean_covariance(const Eigen::Matrix2d& scatter, int n, double floor) {
   return scatter / n + floor * floor * Eigen::Matrix2d::Identity();
@@ -139,7 +146,7 @@ void MapEvidence::add_unmapped(const Eigen::Vector2d& map_p, const Eigen::Vector
       range > 0.0 ? Eigen::Vector2d(map_p + config_.candidate_radius / range * to_laser) : map_p;
   c.points.add(map_p);
   c.recent_points.add(map_p);
-  c.recent_fronts.add(front);
+  c.fronts.add(front);
   c.viewpoint_spread = std::max(c.viewpoint_spread, (map_p_laser - c.first_viewpoint).norm());
   const double turn = angle_diff(std::atan2(to_laser.y(), to_laser.x()), c.first_view_angle);
   c.view_angle_low = std::min(c.view_angle_low, turn);
@@ -152,11 +159,11 @@ bool MapEvidence::is_candidate(const Cluster& c) const {
       c.viewpoint_spread < config_.candidate_min_viewpoint_spread ||
       c.view_angle_high - c.view_angle_low < config_.candidate_min_view_angle)
     return false;
-  // Robust spreads of the last 64 sightings: a handful of strays (a scan placed with a pose a
+  // The robust spread of the last 64 sightings: a handful of strays (a scan placed with a pose a
   // few centimetres off while turning) inflated the plain standard deviation of an added wall
   // reflector to > 2 cm while its centre was right within 1 mm, and it was never proposed.
   const double scatter = c.recent_points.robust_sigma();
-  return scatter <= config_.candidate_max_scatter && scatter < c.recent_fronts.robust_sigma();
+  return scatter <= config_.candidate_max_scatter && scatter < major_sigma(c.fronts.covariance());
 }
 
 ReflectorHealthEntry MapEvidence::entry(size_t index) const {
