@@ -12,6 +12,7 @@
 #include "common/program_version.hpp"
 #include "common/robot_config.hpp"
 #include "reflector_extractor/extractor_config_file.hpp"
+#include "survey_map_warnings.hpp"
 
 #include <fmt/format.h>
 
@@ -125,8 +126,10 @@ int run_drive_command(const DriveCommandOptions& o) {
                map.reflectors.size());
     return kExitRuntimeFailure;
   }
+  const std::string self_similar = self_similar_map_warning(map);
+  if (!self_similar.empty()) fmt::print(stderr, "refloc-survey: warning: {}\n", self_similar);
   write_reflector_map(map, o.out_path);
-  fmt::print("map written: {}\n", o.out_path);
+  fmt::print("map written: {}{}\n", o.out_path, self_similar.empty() ? "" : " (with the warning above)");
   if (!o.report_dir.empty()) write_survey_report(o.report_dir, survey, map);
   if (!o.truth_path.empty()) compare_with_truth(o, map, survey, robot.robot_T_laser);
   if (!o.report_dir.empty()) draw(o);

@@ -8,6 +8,7 @@
 #include "reflector_extractor/extractor_node.hpp"
 #include "static_progress.hpp"
 #include "static_scans.hpp"
+#include "survey_map_warnings.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -117,6 +118,8 @@ int run_static_command(const StaticCommandOptions& o) {
   const ReflectorMap map = static_survey_map(result, o.map_id, extractor.extractor.reflector_radius);
   const std::string colinear = colinear_map_warning(map, o.out_path);
   if (!colinear.empty()) fmt::print(stderr, "refloc-survey: warning: {}\n", colinear);
+  const std::string self_similar = self_similar_map_warning(map);
+  if (!self_similar.empty()) fmt::print(stderr, "refloc-survey: warning: {}\n", self_similar);
   write_reflector_map(map, o.out_path);
   fmt::print("map written: {} ({} reflectors, source surveyed)\n", o.out_path, map.reflectors.size());
   return 0;

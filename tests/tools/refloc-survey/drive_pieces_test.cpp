@@ -7,6 +7,7 @@
 #include "drive_landmark_track.hpp"
 #include "drive_map_comparison.hpp"
 #include "drive_occluders.hpp"
+#include "survey_map_warnings.hpp"
 
 #include "common/json_config.hpp"
 
@@ -191,6 +192,13 @@ TEST(SurveyAnchors, RefusesOneAnchorATwiceUsedIdAndUnknownKeysNamingTheKey) {
   EXPECT_NE(message(R"({"anchors": [{"id": 1, "x_m": 0, "y_m": 0}, {"id": 2, "x": 1, "y_m": 0}]})")
                 .find("/anchors/1/x_m"),
             std::string::npos);
+}
+
+TEST(SurveyMapWarnings, ASymmetricLayoutIsWrittenWithAWarningTheDemoHallWithout) {
+  const std::string dir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/";
+  const std::string symmetric = self_similar_map_warning(load_reflector_map(dir + "map_symmetric.json"));
+  EXPECT_NE(symmetric.find("12 of its 12 reflectors"), std::string::npos) << symmetric;
+  EXPECT_EQ(self_similar_map_warning(load_reflector_map(dir + "map_demo_v2.json")), "");
 }
 
 }  // namespace
