@@ -68,14 +68,18 @@ struct Inbox {
   }
 };
 
-/// The deployed pose_solver.json as the sample log was recorded: before the range-bias model
-/// (issue 12; b held at 0 with no sigma). Re-recording the sample drops this.
-std::string solver_config_as_recorded(const std::string& config_dir, const std::string& path) {
-  // The shipped file has // comments (ignore_comments, as JsonConfig reads it).
-  nlohmann::json j =
-      nlohmann::json::parse(std::ifstream(config_dir + "pose_solver.json"), nullptr, true, true);
-  j["range_bias_estimate"] = false;
-  j["range_bias_prior_sigma_m"] = 0.0;
+/// A deployed config file as the sample log was recorded, `recorded` patched over it: the
+/// solver before the range-bias model (issue 12; b held at 0 with no sigma), the extractor
+/// before the beam-spot model and the matcher before the fit consistency test (issue 14).
+/// Re-recording the sample drops these.
+std::string config_as_recorded(const std::string& config_dir, const std::string& file,
+                               const nlohmann::json& recorded, const std::string& path) {
+  // The shipped files have // comments (ignore_comments, as JsonConfig reads them).
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(config_dir + file), nullptr, true, true);
+  j.merge_patch(recorded);
+  // Written elsewhere, a relative map file would be looked for next to the copy.
+  if (j.contains("map_file") && j["map_file"].is_string() && j["map_file"].get<std::string>().rfind('/', 0) != 0)
+    j["map_file"] = config_dir + j["map_file"].get<std::string>();
   std::ofstream(path) << j.dump(2);
   return path;
 }
@@ -90,14 +94,22 @@ ReplayResult replay_once(lcm::LCM& lcm, Inbox& inbox, const std::string& tag) {
   }
   inbox = Inbox{};
   testing::ChildProcess extractor(
-      {kBin + "reflector_extractor", "--config", config + "reflector_extractor.json", "--robot",
+      {kBin + "reflector_extractor", "--config",
+       config_as_recorded(config, "reflector_extractor.json",
+                          {{"default", {{"fit", {{"spot", {{"enabled", false}}}}}}}}, logs + "extractor.json"),
+       "--robot",
        config + "robot.json", url},
       logs + "extractor.log");
-  testing::ChildProcess matcher({kBin + "reflector_matcher", "--config", config + "reflector_matcher.json",
+  testing::ChildProcess matcher({kBin + "reflector_matcher", "--config",
+                                 config_as_recorded(config, "reflector_matcher.json",
+                                                    {{"relocalization", {{"fit_consistency_sigmas", 0.0}}}},
+                                                    logs + "matcher.json"),
                                  "--robot", config + "robot.json", url},
                                 logs + "matcher.log");
   testing::ChildProcess solver(
-      {kBin + "pose_solver", "--config", solver_config_as_recorded(config, logs + "pose_solver.json"),
+      {kBin + "pose_solver", "--config", config_as_recorded(config, "pose_solver.json",
+                                     {{"range_bias_estimate", false}, {"range_bias_prior_sigma_m", 0.0}},
+                                     logs + "pose_solver.json"),
        "--robot", config + "robot.json", url},
       logs + "solver.log");
   // Services announce themselves with their first heartbeat once they are subscribed.
