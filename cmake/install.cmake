@@ -39,7 +39,8 @@ install(DIRECTORY deploy/systemd/ DESTINATION deploy/systemd)
 install(PROGRAMS tests/tools/run_in_netns.sh DESTINATION deploy)
 install(DIRECTORY docs/ DESTINATION docs)
 # run_mission.sh and refloc-eval draw their pictures with it (<root>/tools/refloc-plot).
-install(PROGRAMS tools/refloc-plot/refloc-plot.py DESTINATION tools/refloc-plot)
+install(PROGRAMS tools/refloc-plot/refloc-plot.py tools/refloc-plot/residual_correlation.py
+        DESTINATION tools/refloc-plot)
 install(FILES tools/refloc-plot/refloc_plot_data.py tools/refloc-plot/refloc_plot_draw.py
               tools/refloc-plot/refloc_plot_studies.py tools/refloc-plot/README.md DESTINATION tools/refloc-plot)
 # refloc-survey drive draws its report with this script (<root>/tools/refloc-survey).

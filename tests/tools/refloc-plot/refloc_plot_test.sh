@@ -64,4 +64,41 @@ expect_exit 64 "unrecognized arguments: --bogus" "$plot" eval --csv x.csv --worl
 expect_png "$tmp/study.png"
 expect_text "$tmp/study.svg" "refloc-eval paper-table (10 poses x 1 scans" "paper's Table 1"
 expect_text "$tmp/eval.out" "wrote $tmp/study.csv" "refloc-plot: wrote $tmp/study.png"
+# residual_correlation.py on a synthetic run: a robot driving along x at 1 m/s past 3 reflectors,
+# 50 scans/s; each detection's error = the reflector's persistent offset (3 mm radial) + white
+# noise (6 mm). The persistent part must come out as correlation at every lag (9/45 = 0.2), the
+# white part as none: rho at one scan near 0.2 radial, near 0 tangential.
+/usr/bin/python3 - "$tmp/corr.jsonl" <<'PY'
+import json, math, random, sys
+random.seed(3)
+refl = {1: (5.0, 3.0, 0.003), 2: (10.0, -3.0, -0.003), 3: (15.0, 3.0, 0.003)}
+with open(sys.argv[1], "w") as f:
+    for k in range(1000):
+        t = 1_000_000 + 20_000 * k
+        x = 0.02 * k
+        f.write(json.dumps({"channel": "GROUND_TRUTH", "msg": {"utime": t, "x": x, "y": 0.0, "theta": 0.0}}) + "\n")
+        matches = []
+        lx = x + 0.3
+        for i, (mx, my, bias) in refl.items():
+            px, py = mx - lx, my
+            r = math.hypot(px, py)
+            er, et = bias + random.gauss(0, 0.006), random.gauss(0, 0.006)
+            dx = px + (er * px - et * py) / r
+            dy = py + (er * py + et * px) / r
+            matches.append({"map_id": i, "map_x": mx, "map_y": my, "detection": {"x": dx, "y": dy, "utime": t}})
+        f.write(json.dumps({"channel": "REFLECTOR_MATCHES", "msg": {"utime": t, "status": 0, "matches": matches}}) + "\n")
+        f.write(json.dumps({"channel": "MAP_HEALTH", "type": None}) + "\n")
+PY
+/usr/bin/python3 "$repo/tools/refloc-plot/residual_correlation.py" --jsonl "$tmp/corr.jsonl" \
+  --robot "$repo/deploy/config/robot.json" --out "$tmp/corr.png" >"$tmp/corr.out"
+expect_png "$tmp/corr.png"
+/usr/bin/python3 - "$tmp/corr.out" <<'PY' || fail "residual_correlation: $(cat "$tmp/corr.out")"
+import re, sys
+text = open(sys.argv[1]).read()
+radial, tangential = map(float, re.search(r"one scan \(0-30 ms\): radial (\S+), tangential (\S+)", text).groups())
+assert 0.12 < radial < 0.28 and abs(tangential) < 0.08, (radial, tangential)
+PY
+expect_exit 2 "needs GROUND_TRUTH" /usr/bin/python3 "$repo/tools/refloc-plot/residual_correlation.py" \
+  --jsonl /dev/null --robot "$repo/deploy/config/robot.json" --out "$tmp/x.png"
+
 echo "refloc-plot: mission, eval and drive pictures, 7 bad inputs, refloc-eval's picture: all as expected"
