@@ -71,8 +71,10 @@ class Truth:
         return a[1] + w * (b[1] - a[1]), a[2] + w * (b[2] - a[2]), a[3] + w * dth, d
 
 
-def residuals(truth, matches, mount):
-    """Per map id: arrays (utime [s], travelled [m], radial error [m], tangential error [m])."""
+def residuals(truth, matches, mount, nees_by_range=None):
+    """Per map id: arrays (utime [s], travelled [m], radial error [m], tangential error [m]).
+    nees_by_range: if a dict, gets range bin [m] -> list of each detection's NEES against its
+    own covariance (2 is honest)."""
     mx, my, mth = mount
     per = {}
     for m in matches:
@@ -92,6 +94,12 @@ def residuals(truth, matches, mount):
             py = -dx * math.sin(lth) + dy * math.cos(lth)
             r = math.hypot(px, py)
             ex, ey = det["x"] - px, det["y"] - py
+            if nees_by_range is not None and "covariance" in det:
+                c = det["covariance"]
+                det_c = c[0] * c[3] - c[1] * c[2]
+                if det_c > 0:
+                    nees = (c[3] * ex * ex - (c[1] + c[2]) * ex * ey + c[0] * ey * ey) / det_c
+                    nees_by_range.setdefault(min(int(r // 2) * 2, 16), []).append(nees)
             radial = (ex * px + ey * py) / r
             tangential = (-ex * py + ey * px) / r
             per.setdefault(p["map_id"], []).append((m["utime"] * 1e-6, travelled, radial, tangential))
@@ -151,7 +159,8 @@ def main(argv):
     if len(truth_samples) < 2 or not matches:
         print("residual_correlation: the export needs GROUND_TRUTH and OK REFLECTOR_MATCHES", file=sys.stderr)
         return 2
-    per = residuals(Truth(truth_samples), matches, mount)
+    nees_by_range = {}
+    per = residuals(Truth(truth_samples), matches, mount, nees_by_range)
     time_edges = np.array([0.0, 0.03, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, a.max_lag_s + 1e-9])
     dist_edges = np.array([0.0, 0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 100.0])
     rho_t, cnt_t, rho_d, cnt_d, var = correlation(per, a.max_lag_s, time_edges, dist_edges)
@@ -164,6 +173,9 @@ def main(argv):
     for k, name in enumerate(("radial", "tangential")):
         print(f"{name}: rho < 0.5 after {first_below(d_centres, rho_d[:, k], 0.5):.3f} m travelled, "
               f"< 0.2 after {first_below(d_centres, rho_d[:, k], 0.2):.3f} m; beyond 2 m {rho_d[-2, k]:.2f}")
+    if nees_by_range:
+        print("per-detection NEES against the extractor's covariance (2 is honest), by range: " +
+              ", ".join(f"{lo}-{lo + 2} m {np.mean(v):.2f} (n {len(v)})" for lo, v in sorted(nees_by_range.items())))
     stem = a.out[:-4] if a.out.endswith(".png") else a.out
     with open(stem + ".csv", "w", newline="") as f:
         w = csv.writer(f)
