@@ -20,11 +20,11 @@ namespace {
 
 // Gauss-Legendre nodes and weights on [-1, 1], 8 points.
 constexpr std::array<double, 8> kGaussNode = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
-                                               -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
-                                               0.7966664774136267,  0.9602898564975363};
+                                              -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
+                                              0.7966664774136267,  0.9602898564975363};
 constexpr std::array<double, 8> kGaussWeight = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
-                                                 0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
-                                                 0.2223810344533745, 0.1012285362903763};
+                                                0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
+                                                0.2223810344533745, 0.1012285362903763};
 
 // Spot-weighted mean range of the part of a beam's spot on a circle whose centre lies at
 // (along, across) in the beam's frame; NaN when the spot misses it. The spot's rays are taken

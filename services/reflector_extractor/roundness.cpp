@@ -39,8 +39,7 @@ RoundnessVerdict check_known_radius_roundness(const std::vector<FitBeam>& beams,
     const double chi2 = std::min(known_fit.chi2, known_fit.central_ray_chi2);
     const double rms = std::sqrt(chi2 / static_cast<double>(n - 2));
     if (rms > config.max_rms_residual_sigmas) return RoundnessVerdict::kResidual;
-    if (flat_chi2 >= 0.0 && chi2 - flat_chi2 > config.flat_chi2_margin)
-      return RoundnessVerdict::kFlat;
+    if (flat_chi2 >= 0.0 && chi2 - flat_chi2 > config.flat_chi2_margin) return RoundnessVerdict::kFlat;
   }
   if (free_fit != nullptr && static_cast<int>(n) >= config.min_beams_for_radius_check) {
     const double tolerance = std::max(config.radius_tolerance, config.radius_sigmas * free_fit->radius_sigma);
@@ -87,8 +86,7 @@ double mean_abs_range_residual(const std::vector<FitBeam>& beams, const CircleFi
                                const KnownRadiusFitConfig& config) {
   if (beams.empty()) return 0.0;
   double sum = 0.0;
-  for (const FitBeam& b : beams)
-    sum += std::abs(range_residual(b, fit.center, fit.radius, config));
+  for (const FitBeam& b : beams) sum += std::abs(range_residual(b, fit.center, fit.radius, config));
   return sum / static_cast<double>(beams.size());
 }
 

@@ -26,11 +26,11 @@ struct Association {
 };
 
 struct Verification {
-  Pose2 map_T_laser;    ///< the hypothesis refitted to all its associations
-  double score = 0.0;   ///< matched - missed_penalty * missed - unexplained_penalty * unexplained
-  int matched = 0;      ///< detections explained
-  int missed = 0;       ///< reflectors expected in view, not shadowed or occluded, not seen
-  int unexplained = 0;  ///< detections no reflector explains
+  Pose2 map_T_laser;     ///< the hypothesis refitted to all its associations
+  double score = 0.0;    ///< matched - missed_penalty * missed - unexplained_penalty * unexplained
+  int matched = 0;       ///< detections explained
+  int missed = 0;        ///< reflectors expected in view, not shadowed or occluded, not seen
+  int unexplained = 0;   ///< detections no reflector explains
   int inconsistent = 0;  ///< pairs dropped (or all, for 3) by the fit consistency test
 };
 

@@ -56,7 +56,7 @@ struct RelocalizationConfig {
   /// missed_penalty_max_range_m: reflectors farther are not expected to be detected: at 0.5 deg
   /// a 120 mm cylinder spans fewer than 2 beams beyond ~7 m, which the extractor may reject [m].
   double missed_penalty_max_range = 8.0;
-  double unexplained_penalty = 0.25;    ///< score lost per detection no map reflector explains [-]
+  double unexplained_penalty = 0.25;  ///< score lost per detection no map reflector explains [-]
   /// fit_consistency_sigmas: the pairs' residuals after the rigid fit, as a chi-square with the
   /// detections' covariances (+ map_sigma), may exceed its mean by at most this many of its
   /// standard deviations (Wilson-Hilferty); worse pairs are dropped while 4 or more remain,

@@ -78,7 +78,8 @@ std::string config_as_recorded(const std::string& config_dir, const std::string&
   nlohmann::json j = nlohmann::json::parse(std::ifstream(config_dir + file), nullptr, true, true);
   j.merge_patch(recorded);
   // Written elsewhere, a relative map file would be looked for next to the copy.
-  if (j.contains("map_file") && j["map_file"].is_string() && j["map_file"].get<std::string>().rfind('/', 0) != 0)
+  if (j.contains("map_file") && j["map_file"].is_string() &&
+      j["map_file"].get<std::string>().rfind('/', 0) != 0)
     j["map_file"] = config_dir + j["map_file"].get<std::string>();
   std::ofstream(path) << j.dump(2);
   return path;
@@ -96,20 +97,21 @@ ReplayResult replay_once(lcm::LCM& lcm, Inbox& inbox, const std::string& tag) {
   testing::ChildProcess extractor(
       {kBin + "reflector_extractor", "--config",
        config_as_recorded(config, "reflector_extractor.json",
-                          {{"default", {{"fit", {{"spot", {{"enabled", false}}}}}}}}, logs + "extractor.json"),
-       "--robot",
-       config + "robot.json", url},
+                          {{"default", {{"fit", {{"spot", {{"enabled", false}}}}}}}},
+                          logs + "extractor.json"),
+       "--robot", config + "robot.json", url},
       logs + "extractor.log");
-  testing::ChildProcess matcher({kBin + "reflector_matcher", "--config",
-                                 config_as_recorded(config, "reflector_matcher.json",
-                                                    {{"relocalization", {{"fit_consistency_sigmas", 0.0}}}},
-                                                    logs + "matcher.json"),
-                                 "--robot", config + "robot.json", url},
-                                logs + "matcher.log");
+  testing::ChildProcess matcher(
+      {kBin + "reflector_matcher", "--config",
+       config_as_recorded(config, "reflector_matcher.json",
+                          {{"relocalization", {{"fit_consistency_sigmas", 0.0}}}}, logs + "matcher.json"),
+       "--robot", config + "robot.json", url},
+      logs + "matcher.log");
   testing::ChildProcess solver(
-      {kBin + "pose_solver", "--config", config_as_recorded(config, "pose_solver.json",
-                                     {{"range_bias_estimate", false}, {"range_bias_prior_sigma_m", 0.0}},
-                                     logs + "pose_solver.json"),
+      {kBin + "pose_solver", "--config",
+       config_as_recorded(config, "pose_solver.json",
+                          {{"range_bias_estimate", false}, {"range_bias_prior_sigma_m", 0.0}},
+                          logs + "pose_solver.json"),
        "--robot", config + "robot.json", url},
       logs + "solver.log");
   // Services announce themselves with their first heartbeat once they are subscribed.

@@ -123,13 +123,13 @@ TEST(ExtractorOnEmulatorScans, SpotModelRemovesTheRadialBiasThatGrowsWithRange) 
   for (double range : {1.0, 2.0, 3.0, 4.5, 6.0, 8.0, 10.0, 12.0, 15.0}) {
     const Outcome with_spot = run(Target::kCylinder, range, 600, spot, 13);
     const Outcome without = run(Target::kCylinder, range, 600, central_ray, 13);
-    std::printf("cylinder %5.1f m: radial bias %+6.2f mm (se %.2f) with the spot model, %+6.2f mm (se %.2f) "
-                "central ray; rms %.1f / %.1f mm\n",
-                range, 1e3 * with_spot.mean_radial_error,
-                1e3 * with_spot.radial_error_sd / std::sqrt(std::max(with_spot.fits, 1)),
-                1e3 * without.mean_radial_error,
-                1e3 * without.radial_error_sd / std::sqrt(std::max(without.fits, 1)), 1e3 * with_spot.rms_error,
-                1e3 * without.rms_error);
+    std::printf(
+        "cylinder %5.1f m: radial bias %+6.2f mm (se %.2f) with the spot model, %+6.2f mm (se %.2f) "
+        "central ray; rms %.1f / %.1f mm\n",
+        range, 1e3 * with_spot.mean_radial_error,
+        1e3 * with_spot.radial_error_sd / std::sqrt(std::max(with_spot.fits, 1)),
+        1e3 * without.mean_radial_error, 1e3 * without.radial_error_sd / std::sqrt(std::max(without.fits, 1)),
+        1e3 * with_spot.rms_error, 1e3 * without.rms_error);
     EXPECT_LT(std::abs(with_spot.mean_radial_error), 0.004) << range;
     EXPECT_LT(with_spot.rms_error, without.rms_error * 1.05) << range;
     if (range >= 10.0) {
@@ -252,4 +252,3 @@ TEST(ExtractorOnEmulatorScans, NoiseFreeCentresWithTheSpotModel) {
 
 }  // namespace
 }  // namespace refloc
-

@@ -15,7 +15,8 @@ using testing::SyntheticSensor;
 
 ReflectorMap three_reflectors() {
   ReflectorMap map;
-  map.reflectors = {{1, {4.0, 0.0}, 0.06, "", {}}, {2, {0.0, 5.0}, 0.06, "", {}}, {3, {-3.0, -4.0}, 0.06, "", {}}};
+  map.reflectors = {
+      {1, {4.0, 0.0}, 0.06, "", {}}, {2, {0.0, 5.0}, 0.06, "", {}}, {3, {-3.0, -4.0}, 0.06, "", {}}};
   return map;
 }
 
@@ -46,12 +47,14 @@ TEST(FitConsistency, ThreePairsWithTwoReflectorsMovedByThirtyCentimetresExplainN
   // walls: the stack matched [19, 4, 14] as an OK fix (the best rigid fit spreads the moves
   // over the three pairs, each within the 0.15 m fine gate).
   ReflectorMap map;
-  map.reflectors = {{19, {15.08, 6.0}, 0.06, "", {}}, {4, {13.4, 0.1}, 0.06, "", {}}, {14, {19.9, 7.9}, 0.06, "", {}}};
+  map.reflectors = {
+      {19, {15.08, 6.0}, 0.06, "", {}}, {4, {13.4, 0.1}, 0.06, "", {}}, {14, {19.9, 7.9}, 0.06, "", {}}};
   const MapGrid grid(map, 10.0);
   const Pose2 map_T_laser{18.29, 2.0, M_PI / 2};
   const Pose2 laser_T_map = map_T_laser.inverse();
-  const auto moved = detections_of({laser_T_map * Eigen::Vector2d(15.08, 6.0), laser_T_map * Eigen::Vector2d(13.7, 0.1),
-                                    laser_T_map * Eigen::Vector2d(19.9, 8.2)});
+  const auto moved =
+      detections_of({laser_T_map * Eigen::Vector2d(15.08, 6.0), laser_T_map * Eigen::Vector2d(13.7, 0.1),
+                     laser_T_map * Eigen::Vector2d(19.9, 8.2)});
   RelocalizationConfig off;
   off.fit_consistency_sigmas = 0.0;
   HypothesisVerifier without(map, grid, SensorVisibilityConfig{}, off);
@@ -62,9 +65,9 @@ TEST(FitConsistency, ThreePairsWithTwoReflectorsMovedByThirtyCentimetresExplainN
   EXPECT_EQ(v.matched, 0);
   EXPECT_EQ(v.inconsistent, 3);
 
-  const auto in_place = detections_of({laser_T_map * Eigen::Vector2d(15.09, 6.01),
-                                       laser_T_map * Eigen::Vector2d(13.39, 0.1),
-                                       laser_T_map * Eigen::Vector2d(19.9, 7.91)});
+  const auto in_place =
+      detections_of({laser_T_map * Eigen::Vector2d(15.09, 6.01), laser_T_map * Eigen::Vector2d(13.39, 0.1),
+                     laser_T_map * Eigen::Vector2d(19.9, 7.91)});
   const Verification kept = verifier.verify(map_T_laser, in_place);
   EXPECT_EQ(kept.matched, 3);
   EXPECT_EQ(kept.inconsistent, 0);
@@ -76,7 +79,8 @@ TEST(FitConsistency, ARangeBiasOfThirtyMillimetresIsNotAnInconsistency) {
   const MapGrid grid(map, 10.0);
   HypothesisVerifier verifier(map, grid, SensorVisibilityConfig{}, RelocalizationConfig{});
   std::vector<Eigen::Vector2d> long_ranges;
-  for (const MapReflector& r : map.reflectors) long_ranges.push_back(r.map_p_center * (1.0 + 0.03 / r.map_p_center.norm()));
+  for (const MapReflector& r : map.reflectors)
+    long_ranges.push_back(r.map_p_center * (1.0 + 0.03 / r.map_p_center.norm()));
   EXPECT_EQ(verifier.verify(Pose2{}, detections_of(long_ranges)).matched, 3);
 }
 
@@ -112,7 +116,8 @@ TEST(FitConsistency, NoFewerOkFixesOverAThousandRandomPoses) {
     without_test.match(scan.detections, nullptr, result);
     ok_without += result.status == MatchStatus::kOk;
   }
-  std::printf("OK fixes over 1000 random poses: %d with the consistency test, %d without\n", ok_with, ok_without);
+  std::printf("OK fixes over 1000 random poses: %d with the consistency test, %d without\n", ok_with,
+              ok_without);
   EXPECT_GE(ok_with, ok_without * 99 / 100);
 }
 

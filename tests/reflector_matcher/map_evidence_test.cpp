@@ -161,7 +161,8 @@ TEST(MapEvidence, AFewStraySightingsDoNotHideACandidate) {
   const Eigen::Vector2d c(3.0, 0.5);
   for (int s = 0; s < 400; ++s) {
     ScanEvidence e = scan_seeing(map, std::min(s, 250), {});
-    const Eigen::Vector2d stray = s % 20 == 3 ? Eigen::Vector2d(0.09 + 0.0001 * s, -0.04) : Eigen::Vector2d::Zero();
+    const Eigen::Vector2d stray =
+        s % 20 == 3 ? Eigen::Vector2d(0.09 + 0.0001 * s, -0.04) : Eigen::Vector2d::Zero();
     e.unmapped.push_back(c + jitter(s, 7) + stray);
     evidence.add(e);
   }

@@ -14,8 +14,9 @@ namespace {
 TEST(MapSelfSimilarity, TheSymmetricHallLooksWhollyLikeItselfTheDemoHallAQuarter) {
   const ReflectorMap symmetric = load_reflector_map(REFLOC_SOURCE_DIR "/deploy/config/map_symmetric.json");
   const MapSelfSimilarity s = find_map_self_similarity(symmetric);
-  std::printf("symmetric hall: %d of %zu reflectors onto others by (%.2f, %.2f, %.1f deg)\n", s.reflectors_matched,
-              symmetric.reflectors.size(), s.move.x, s.move.y, s.move.theta * 180.0 / M_PI);
+  std::printf("symmetric hall: %d of %zu reflectors onto others by (%.2f, %.2f, %.1f deg)\n",
+              s.reflectors_matched, symmetric.reflectors.size(), s.move.x, s.move.y,
+              s.move.theta * 180.0 / M_PI);
   EXPECT_EQ(s.reflectors_matched, static_cast<int>(symmetric.reflectors.size()));
 
   const ReflectorMap demo = load_reflector_map(REFLOC_SOURCE_DIR "/deploy/config/map_demo_v2.json");

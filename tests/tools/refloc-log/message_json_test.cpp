@@ -8,10 +8,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <refloc/heartbeat_t.hpp>
+#include <refloc/laser_scan_t.hpp>
 #include <refloc/map_candidate_t.hpp>
 #include <refloc/map_health_t.hpp>
 #include <refloc/map_reflector_health_t.hpp>
-#include <refloc/laser_scan_t.hpp>
 #include <refloc/nav_goal_t.hpp>
 #include <refloc/nav_status_t.hpp>
 #include <refloc/odometry_t.hpp>
