@@ -176,16 +176,19 @@ StudyResult run_study(const sim::World& world, const ReflectorMap& map, const Po
       const auto utime =
           1700000000000000 + static_cast<int64_t>(static_cast<double>(done) * config.scan_spacing * 1e6);
       renderer.render(world, map_T_laser, utime, rng, scan);
+      // The bound is the sensor's in the world as it is, whatever map the localization loads
+      // (a surveyed map numbers its reflectors its own way): the world's reflectors, by their ids.
+      const ReflectorMap& truth = world.reflectors;
       crlb_beams.clear();
       for (size_t b = 0; b < renderer.truth().size(); ++b) {
         const auto& t = renderer.truth()[b];
         const int index =
-            t.kind == sim::HitKind::kReflector && t.coverage >= kCrlbMinCoverage ? map.index_of(t.id) : -1;
+            t.kind == sim::HitKind::kReflector && t.coverage >= kCrlbMinCoverage ? truth.index_of(t.id) : -1;
         if (index >= 0) crlb_beams.push_back({scan.beam_angle(b), index});
       }
       const auto crlb =
-          beam_range_crlb(map, poses[p], robot_T_laser, crlb_beams, config.sensor.range_sigma, spot);
-      const auto point_crlb = beam_range_crlb(map, poses[p], robot_T_laser, crlb_beams,
+          beam_range_crlb(truth, poses[p], robot_T_laser, crlb_beams, config.sensor.range_sigma, spot);
+      const auto point_crlb = beam_range_crlb(truth, poses[p], robot_T_laser, crlb_beams,
                                               config.sensor.range_sigma, BeamSpotModel::point_beam());
       for (LocalizationPipeline* pipeline : {&paper, &best}) {
         const PipelineOutput& out = pipeline->on_scan(scan);
