@@ -47,11 +47,12 @@ TEST(StudyMap, TheBoundIsTheWorldsWhateverIdsTheLoadedMapGivesItsReflectors) {
   config.repeats = 1;
   std::vector<Pose2> poses = paper_table_poses();
   poses.resize(3);
-  const StudyResult with_world_ids = run_study(world, load_reflector_map(world.map_file), robot_T_laser,
-                                               configs(PipelineMode::kPaper), configs(PipelineMode::kDefault),
-                                               poses, config, {});
-  const StudyResult with_other_ids = run_study(world, renumbered, robot_T_laser, configs(PipelineMode::kPaper),
-                                               configs(PipelineMode::kDefault), poses, config, {});
+  const StudyResult with_world_ids =
+      run_study(world, load_reflector_map(world.map_file), robot_T_laser, configs(PipelineMode::kPaper),
+                configs(PipelineMode::kDefault), poses, config, {});
+  const StudyResult with_other_ids =
+      run_study(world, renumbered, robot_T_laser, configs(PipelineMode::kPaper),
+                configs(PipelineMode::kDefault), poses, config, {});
   ASSERT_EQ(with_world_ids.measurements.size(), with_other_ids.measurements.size());
   for (size_t i = 0; i < with_world_ids.measurements.size(); ++i) {
     ASSERT_TRUE(with_world_ids.measurements[i].has_crlb);
