@@ -14,10 +14,6 @@ bool is_positive_definite(const Eigen::Matrix2d& m) {
   return m(0, 0) > 0.0 && m(1, 1) > 0.0 && m.determinant() > 0.0;
 }
 
-}  // namespace
-
-namespace {
-
 // Gauss-Legendre nodes and weights on [-1, 1], 8 points.
 constexpr std::array<double, 8> kGaussNode = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
                                               -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
@@ -175,10 +171,11 @@ bool fit_circle_known_radius(const std::vector<FitBeam>& beams, double radius,
   Eigen::Vector2d center = mean + radius * mean.normalized();
   int iteration = 0;
   double central_ray_chi2 = -1.0;
+  // The central-ray model: the first fit when the spot is modelled, and the covariance's.
+  KnownRadiusFitConfig central_ray = config;
+  central_ray.spot.enabled = false;
   if (config.spot.applies()) {
     // First the central-ray fit, whose cost is smooth everywhere: it places the centre.
-    KnownRadiusFitConfig central_ray = config;
-    central_ray.spot.enabled = false;
     const int first = gauss_newton_centre(beams, radius, central_ray, center);
     if (first < 0) return false;
     iteration += first;
@@ -212,15 +209,13 @@ bool fit_circle_known_radius(const std::vector<FitBeam>& beams, double radius,
   // The covariance is the central-ray fit's: its lateral estimate is the one kept, and the
   // spot's correction along the line of sight is a systematic one (NEES over 0.5-6 m stays
   // 1.5-2.1 as before the spot model; with the spot model's own information it fell to 1.2).
-  KnownRadiusFitConfig covariance_model = config;
-  covariance_model.spot.enabled = false;
   Eigen::Matrix2d information = Eigen::Matrix2d::Zero();
   out.chi2 = 0.0;
   for (const FitBeam& b : beams) {
     Eigen::Vector2d jac;
-    range_residual(b, center, radius, covariance_model, &jac);
+    const double central_ray_e = range_residual(b, center, radius, central_ray, &jac);
     information += b.weight * jac * jac.transpose();
-    const double e = range_residual(b, center, radius, config);
+    const double e = config.spot.applies() ? range_residual(b, center, radius, config) : central_ray_e;
     out.chi2 += b.weight * e * e;
   }
   out.central_ray_chi2 = central_ray_chi2 >= 0.0 ? central_ray_chi2 : out.chi2;

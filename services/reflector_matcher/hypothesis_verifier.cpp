@@ -142,16 +142,16 @@ int HypothesisVerifier::drop_inconsistent_pairs(const std::vector<ReflectorDetec
     // all-pairs fit may belong to a good pair the bad one pulled away).
     size_t drop = 0;
     double best_chi2 = std::numeric_limits<double>::infinity();
-    const std::vector<Association> all = associations_;
-    for (size_t i = 0; i < all.size(); ++i) {
-      associations_ = all;
+    all_pairs_ = associations_;  // a member: no allocation per scan once it has grown
+    for (size_t i = 0; i < all_pairs_.size(); ++i) {
+      associations_ = all_pairs_;
       associations_.erase(associations_.begin() + static_cast<std::ptrdiff_t>(i));
       Pose2 pose = map_T_laser;
       if (!refit(detections, pose)) continue;
       const double c = fit_chi2(detections, pose);
       if (c < best_chi2) best_chi2 = c, drop = i;
     }
-    associations_ = all;
+    associations_ = all_pairs_;
     remove_association(drop);
     ++dropped;
     refit(detections, map_T_laser);

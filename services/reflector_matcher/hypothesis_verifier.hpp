@@ -82,6 +82,7 @@ class HypothesisVerifier {
   std::vector<char> detection_used_;
   std::vector<Candidate> candidates_;
   std::vector<Association> associations_;
+  std::vector<Association> all_pairs_;  ///< drop_inconsistent_pairs' copy of associations_
 };
 
 }  // namespace refloc

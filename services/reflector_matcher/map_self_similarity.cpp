@@ -27,10 +27,8 @@ int reflectors_on_others(const ReflectorMap& map, const Pose2& move, double tole
 MapSelfSimilarity find_map_self_similarity(const ReflectorMap& map, double tolerance, double max_side,
                                            size_t max_triangles) {
   MapSelfSimilarity best;
-  std::vector<IndexedTriangle> triangles;
-  enumerate_map_triangles(map, 0.3, max_side, max_triangles, triangles);
   const MapTriangleIndex index(map, tolerance, 0.3, max_side, max_triangles);
-  for (const IndexedTriangle& t : triangles) {
+  for (const IndexedTriangle& t : index.triangles()) {
     const std::array<double, 3> sides{t.side[0], t.side[1], t.side[2]};
     index.for_each_candidate(sides, [&](const IndexedTriangle& other) {
       RigidFit2d fit;

@@ -17,7 +17,8 @@ struct MapSelfSimilarity {
 
 /// The strongest self-similarity among triangles with sides in [0.3, max_side] [m] whose look-
 /// alikes agree within tolerance [m]; a move closer to the identity than 0.2 m / 5 deg does not
-/// count. At most max_triangles triangles are tried (the map's first ones when it has more).
+/// count. At most max_triangles triangles are tried (more: max_side shrinks until they fit, the
+/// triangle index's own rule).
 MapSelfSimilarity find_map_self_similarity(const ReflectorMap& map, double tolerance = 0.05,
                                            double max_side = 16.0, size_t max_triangles = 20000);
 

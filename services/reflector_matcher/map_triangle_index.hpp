@@ -37,6 +37,8 @@ class MapTriangleIndex {
   void for_each_candidate(const std::array<double, 3>& sides, Fn&& fn) const;
 
   size_t size() const { return triangles_.size(); }
+  /// Every indexed triangle (ordered by cell, not by reflector).
+  const std::vector<IndexedTriangle>& triangles() const { return triangles_; }
   double max_side() const { return max_side_; }  ///< [m] possibly reduced to meet max_triangles
 
  private:
