@@ -99,4 +99,14 @@ Eigen::Matrix3d covariance_from_lcm(const double (&in)[9]) {
   return covariance;
 }
 
+void matches_from_message(const reflector_matches_t& msg, std::vector<ReflectorDetection>& detections,
+                          std::vector<ReflectorMatch>& matches) {
+  detections.clear();
+  matches.clear();
+  for (const reflector_match_t& m : msg.matches) {
+    matches.push_back({static_cast<int>(detections.size()), m.map_id, {m.map_x, m.map_y}, m.map_radius});
+    detections.push_back(from_lcm(m.detection));
+  }
+}
+
 }  // namespace refloc

@@ -8,7 +8,10 @@
 
 #include <Eigen/Core>
 #include <refloc/laser_scan_t.hpp>
+#include <refloc/reflector_matches_t.hpp>
 #include <refloc/reflector_t.hpp>
+
+#include <vector>
 
 namespace refloc {
 
@@ -21,6 +24,11 @@ void copy_from_lcm(const laser_scan_t& msg, LaserScan& out);
 
 reflector_t to_lcm(const ReflectorDetection& detection);
 ReflectorDetection from_lcm(const reflector_t& msg);
+
+/// The matches of one REFLECTOR_MATCHES message. Each match carries its detection, so
+/// its readers (pose_solver, pose_fusion) see them as detections 0..n-1.
+void matches_from_message(const reflector_matches_t& msg, std::vector<ReflectorDetection>& detections,
+                          std::vector<ReflectorMatch>& matches);
 
 /// The row-major 3x3 (x, y, theta) covariance of pose2d_t and odometry_t.
 void covariance_to_lcm(const Eigen::Matrix3d& covariance, double (&out)[9]);

@@ -59,4 +59,30 @@ inline InputFault check_reflector_detections(const std::vector<ReflectorDetectio
   return {};
 }
 
+/// The bounds of a match's map side.
+struct MatchBounds {
+  static constexpr double kMaxAbsCoordinate_m = 1e4;  ///< no site is 10 km across
+  static constexpr double kMaxRadius_m = 1.0;         ///< reflector cylinders are centimetres wide
+};
+
+/// REFLECTOR_MATCHES as its readers (pose_solver, pose_fusion) judge it: every detection
+/// usable (check_reflector_detection) and every map position finite within
+/// kMaxAbsCoordinate_m with 0 < radius <= kMaxRadius_m; the first failure decides.
+inline InputFault check_matches(const std::vector<ReflectorDetection>& detections,
+                                const std::vector<ReflectorMatch>& matches) {
+  if (InputFault f = check_reflector_detections(detections)) return f;
+  for (size_t i = 0; i < matches.size(); ++i) {
+    const ReflectorMatch& m = matches[i];
+    if (!all_finite({m.map_p_center.x(), m.map_p_center.y(), m.map_radius}))
+      return {"nonfinite", fmt::format("match #{}: map reflector with a non-finite field", i)};
+    if (!finite_abs_at_most(m.map_p_center.x(), MatchBounds::kMaxAbsCoordinate_m) ||
+        !finite_abs_at_most(m.map_p_center.y(), MatchBounds::kMaxAbsCoordinate_m) ||
+        !(m.map_radius > 0.0 && m.map_radius <= MatchBounds::kMaxRadius_m) || m.detection_index < 0 ||
+        m.detection_index >= static_cast<int>(detections.size()))
+      return {"out_of_bounds", fmt::format("match #{}: map reflector {} at ({}, {}) m, radius {} m", i,
+                                           m.map_id, m.map_p_center.x(), m.map_p_center.y(), m.map_radius)};
+  }
+  return {};
+}
+
 }  // namespace refloc

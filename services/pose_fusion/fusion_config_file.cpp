@@ -40,6 +40,58 @@ FusionServiceConfig parse_fusion_service_config(const JsonConfig& config) {
                       "this many gated-out fixes in a row: LOST, re-initialised from the next OK fix; lower "
                       "recovers sooner from a wrong estimate, trusts wrong fixes sooner"},
                      f.max_consecutive_rejections, 1, 100000));
+  const std::string measurements = config.choice(
+      {"/measurements", "",
+       "what corrects odometry: \"detections\" (each matched reflector of REFLECTOR_MATCHES at its scan's "
+       "time; LASER_POSE only starts the filter) or \"laser_pose\" (the solver's single-scan fixes)"},
+      "detections", {"detections", "laser_pose"});
+  c.measurements =
+      measurements == "detections" ? FusionMeasurements::kDetections : FusionMeasurements::kLaserPose;
+  FusionModel& m = f.model;
+  m.estimate_range_bias =
+      config.boolean({"/model/estimate_range_bias", "",
+                      "estimate the laser's common range offset (detections only); false: held at 0"},
+                     m.estimate_range_bias);
+  m.range_bias_prior_sigma_m =
+      config.number({"/model/range_bias_prior_sigma_m", "m",
+                     "1 sigma of the range offset before any scan (LMS100: +-30 mm)"},
+                    m.range_bias_prior_sigma_m, 0.0, 1.0);
+  m.range_bias_drift_m_per_sqrt_s = config.number(
+      {"/model/range_bias_drift_m_per_sqrt_s", "m/sqrt(s)", "random walk of the range offset (temperature)"},
+      m.range_bias_drift_m_per_sqrt_s, 0.0, 0.1);
+  m.estimate_odometry_error = config.boolean(
+      {"/model/estimate_odometry_error", "",
+       "learn odometry's calibration error (3x3, true increment = (I + E) measured) from the laser; false: "
+       "the odometry noise of robot.json is taken whole as random"},
+      m.estimate_odometry_error);
+  m.odometry_error_prior_sigma =
+      config.number({"/model/odometry_error_prior_sigma", "",
+                     "1 sigma of each element of E before any measurement (0.02: 2 % of the motion)"},
+                    m.odometry_error_prior_sigma, 0.0, 0.5);
+  m.odometry_error_walk_per_sqrt_m =
+      config.number({"/model/odometry_error_walk_per_sqrt_m", "1/sqrt(m)",
+                     "random walk of each element of E per metre driven (a radian turned counts as a "
+                     "metre): how fast a changing load or floor may change the calibration"},
+                    m.odometry_error_walk_per_sqrt_m, 0.0, 0.1);
+  c.odometry_random_noise_fraction =
+      config.number({"/model/odometry_random_noise_fraction", "",
+                     "while E is estimated: the share of robot.json's odometry variance that is random "
+                     "(slip, bumps); larger follows the laser more, smaller smooths more"},
+                    c.odometry_random_noise_fraction, 0.001, 1.0);
+  m.map_sigma_m =
+      config.number({"/model/map_sigma_m", "m",
+                     "1 sigma of each map reflector's position per axis (a surveyed map: 1-2 mm)"},
+                    m.map_sigma_m, 0.0, 1.0);
+  m.detection_gate_chi2 =
+      config.number({"/model/detection_gate_chi2", "",
+                     "a detection farther than this squared Mahalanobis distance from its prediction is "
+                     "dropped (13.82: chi2 2 dof, 99.9 %); a scan with more dropped than kept is refused"},
+                    m.detection_gate_chi2, 0.1, 1e6);
+  m.min_detections_for_fix = static_cast<int>(
+      config.integer({"/model/min_detections_for_fix", "count",
+                      "accepted detections that make a scan a fresh fix (for OK / DEGRADED / LOST); fewer "
+                      "still correct the estimate"},
+                     m.min_detections_for_fix, 1, 100));
   OdometryContinuityConfig& o = c.continuity;
   o.max_gap = config.number({"/continuity/max_gap_s", "s",
                              "ODOMETRY messages further apart: a seam (motion unobserved, covariance grown, "
@@ -71,11 +123,16 @@ FusionServiceConfig parse_fusion_service_config(const JsonConfig& config) {
                     c.odometry_channel);
   c.fix_channel = config.string(
       {"/fix_channel", "", "LCM channel of the solver's laser fixes read (pose2d_t)"}, c.fix_channel);
+  c.matches_channel =
+      config.string({"/matches_channel", "",
+                     "LCM channel of the matcher's matched detections read with measurements \"detections\" "
+                     "(reflector_matches_t)"},
+                    c.matches_channel);
   c.output_channel =
       config.string({"/output_channel", "",
                      "LCM channel the fused pose is published on (pose2d_t, one per ODOMETRY message)"},
                     c.output_channel);
-  for (const char* key : {"/odometry_channel", "/fix_channel", "/output_channel"}) {
+  for (const char* key : {"/odometry_channel", "/fix_channel", "/matches_channel", "/output_channel"}) {
     if (config.string(key, "x").empty()) config.fail(key, "expected a channel name, got \"\"");
   }
   return c;

@@ -13,14 +13,25 @@ namespace refloc {
 
 class JsonConfig;
 
+/// What the filter corrects odometry with.
+enum class FusionMeasurements {
+  kDetections,  ///< REFLECTOR_MATCHES' detections; LASER_POSE only (re-)initialises
+  kLaserPose,   ///< LASER_POSE fixes (the single-scan summary), REFLECTOR_MATCHES not read
+};
+
 struct FusionServiceConfig {
   FusionConfig fusion;
+  FusionMeasurements measurements = FusionMeasurements::kDetections;
+  /// Share of robot.json's odometry variance the filter treats as random while it
+  /// estimates the odometry's calibration error (the rest is that error).
+  double odometry_random_noise_fraction = 0.05;
   /// When consecutive ODOMETRY messages are not one continuous frame.
   OdometryContinuityConfig continuity;
   /// No ODOMETRY this long: fixes are published as DEGRADED POSE (OdometrySilence) [s].
   double odometry_timeout = 0.1;
   std::string odometry_channel = "ODOMETRY";
   std::string fix_channel = "LASER_POSE";
+  std::string matches_channel = "REFLECTOR_MATCHES";
   std::string output_channel = "POSE";
 };
 

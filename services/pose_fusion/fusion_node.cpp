@@ -1,6 +1,9 @@
+// FusionNode: every message checked, counted and logged before the filter sees it;
+// longer than 300 lines because the three input streams share one health and event list.
 #include "pose_fusion/fusion_node.hpp"
 
 #include "common/input_sanity.hpp"
+#include "common/reflector_detection_check.hpp"
 #include "pose_fusion/fusion_input_checks.hpp"
 
 #include <fmt/format.h>
@@ -90,9 +93,25 @@ const char* fix_result_counter(FixResult result) {
   return "fixes_unknown_result";
 }
 
+namespace {
+
+/// What the filter takes as random of the robot's odometry noise: all of it, or while it
+/// estimates the calibration error only the configured share.
+OdometryNoise random_odometry_noise(const FusionServiceConfig& config, OdometryNoise noise) {
+  if (!config.fusion.model.estimate_odometry_error) return noise;
+  const double f = config.odometry_random_noise_fraction;
+  noise.translation_variance_per_m *= f;
+  noise.heading_variance_per_m *= f;
+  noise.heading_variance_per_rad *= f;
+  noise.translation_variance_per_rad *= f;
+  return noise;
+}
+
+}  // namespace
+
 FusionNode::FusionNode(const FusionServiceConfig& config, const OdometryNoise& noise)
     : config_(config),
-      noise_(noise),
+      noise_(random_odometry_noise(config, noise)),
       fusion_(config.fusion),
       continuity_(config.continuity),
       silence_(config.odometry_timeout) {}
@@ -238,7 +257,6 @@ std::optional<FusionOutput> FusionNode::on_fix(const LaserFixInput& input, int64
                                                int64_t host_utime) {
   events_.clear();
   now_mono_us_ = now_mono_us;
-  now_mono_us_ = now_mono_us;
   if (!fix_acceptable(input, host_utime)) return std::nullopt;
   const std::optional<PoseFix> fix = usable_fix(input);
   if (!fix) {
@@ -253,6 +271,10 @@ std::optional<FusionOutput> FusionNode::on_fix(const LaserFixInput& input, int64
     event("fixes_published_without_odometry");
     published(FusionStatus::kDegraded, now_mono_us);
   }
+  if (config_.measurements == FusionMeasurements::kDetections && !fusion_.needs_initialisation()) {
+    event("fixes_left_to_detections");  // the scan's detections correct the estimate themselves
+    return out;
+  }
   const FixResult result = fusion_.add_fix(*fix);
   count_fix_result(result);
   if (result == FixResult::kAccepted || result == FixResult::kInitialised)
@@ -264,6 +286,70 @@ std::optional<FusionOutput> FusionNode::on_fix(const LaserFixInput& input, int64
                       p.theta));
   }
   return out;
+}
+
+void FusionNode::on_matches(const MatchesInput& input, int64_t now_mono_us, int64_t host_utime) {
+  events_.clear();
+  now_mono_us_ = now_mono_us;
+  if (const InputFault fault = check_matches(input.detections, input.matches)) {
+    NodeEvent e = match_checks_.rejected(fault.reason, fault.detail, host_utime);
+    reject(e.counter, std::move(e.log));
+    return;
+  }
+  if (!match_checks_.stamp_accepted(input.utime, host_utime, events_)) {
+    last_rejection_ = events_.back().counter;
+    last_rejection_mono_us_ = now_mono_us;
+    return;
+  }
+  match_checks_.accepted(host_utime);
+  for (int64_t missing = match_checks_.missing_before(input.scan_counter, input.utime, events_); missing > 0;
+       --missing)
+    event(match_checks_.gap_counter());
+  if (!input.matcher_ok) {
+    event("scans_unusable");  // the matcher's AMBIGUOUS or LOST: no association to trust
+    return;
+  }
+  scan_.utime = input.utime;
+  scan_.detections.clear();
+  for (const ReflectorMatch& m : input.matches) {
+    const ReflectorDetection& d = input.detections[static_cast<size_t>(m.detection_index)];
+    scan_.detections.push_back({d.laser_p_center, d.covariance, m.map_p_center, m.map_id});
+  }
+  const ScanResult result = fusion_.add_detections(scan_);
+  switch (result.result) {
+    case FixResult::kAccepted:
+      event("scans_accepted");
+      reflectors_used_ = result.accepted;
+      break;
+    case FixResult::kRejectedGate:
+      event("scans_rejected_gate", NodeEvent::Level::kDebug,
+            fmt::format("scan at utime {} refused: {} of {} detections outside the gate", input.utime,
+                        result.rejected, result.rejected + result.accepted));
+      break;
+    case FixResult::kWaitingForGood:
+      event("scans_waiting_for_fix");  // the filter starts from the solver's next OK fix
+      break;
+    case FixResult::kAheadOfOdometry:
+      reject("rejected_matches_ahead_of_odometry",
+             fmt::format("REFLECTOR_MATCHES more than {:.1f} s ahead of the latest ODOMETRY: refused",
+                         config_.fusion.history));
+      break;
+    case FixResult::kTooOld:
+      event("scans_too_old");
+      break;
+    case FixResult::kDeferred:
+      event("scans_deferred");
+      break;
+    case FixResult::kInitialised:
+      break;
+  }
+  for (int i = 0; i < result.rejected && result.result == FixResult::kAccepted; ++i)
+    event("detections_rejected_gate");
+  const std::pair<double, int> nis = fusion_.take_detection_nis();
+  if (nis.second > 0) {
+    const double mean = nis.first / nis.second;
+    nis_mean_ = nis_mean_ == 0.0 ? mean : nis_mean_ + 0.02 * (mean - nis_mean_);
+  }
 }
 
 FusionHealth FusionNode::health(int64_t now_mono_us) const {

@@ -1,8 +1,10 @@
 #pragma once
-// The pose_fusion service without LCM: ODOMETRY and LASER_POSE in, in arrival
-// order; POSE out once per accepted odometry message (and, while odometry is silent,
-// once per new usable fix, as DEGRADED), with the heartbeat counters to bump, the
-// log lines to write and the heartbeat state. main.cpp only converts messages.
+// The pose_fusion service without LCM: ODOMETRY, REFLECTOR_MATCHES and LASER_POSE in,
+// in arrival order; POSE out once per accepted odometry message (and, while odometry is
+// silent, once per new usable fix, as DEGRADED), with the heartbeat counters to bump, the
+// log lines to write and the heartbeat state. main.cpp only converts messages. With
+// measurements "detections" the matched detections correct the estimate and LASER_POSE
+// only (re-)initialises it; with "laser_pose" the fixes do both and matches are not read.
 //
 // Every message is judged before the filter sees it: its stamp by a StampGuard per
 // stream (against the host clock through the stream's learned offset), then its
@@ -12,8 +14,10 @@
 // counted as gap_<input>_messages. Health is judged by what is published: no POSE
 // for kSilentOutputUs is DEGRADED whatever arrives.
 
+#include "common/input_stream_checks.hpp"
 #include "common/node_event.hpp"
 #include "common/odometry_noise.hpp"
+#include "common/reflector_detection.hpp"
 #include "common/stamp_guard.hpp"
 #include "pose_fusion/fusion_config_file.hpp"
 #include "pose_fusion/laser_fix_input.hpp"
@@ -22,6 +26,8 @@
 #include "pose_fusion/pose_fusion.hpp"
 #include "pose_fusion/stream_gap_counter.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -36,6 +42,15 @@ struct FusionOutput {
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  ///< [m^2, m rad, rad^2]
   FusionStatus status = FusionStatus::kInitializing;
   int32_t reflectors_used = 0;  ///< of the latest accepted fix
+};
+
+/// One REFLECTOR_MATCHES message (reflector_matches_t) as plain structs.
+struct MatchesInput {
+  int64_t utime = 0;  ///< the scan's time [us]
+  int64_t scan_counter = 0;
+  bool matcher_ok = false;  ///< the matcher's status is OK (AMBIGUOUS, LOST: no association to use)
+  std::vector<ReflectorDetection> detections;
+  std::vector<ReflectorMatch> matches;  ///< detection_index into detections
 };
 
 /// The HEARTBEAT state: OK only while POSE is published and its status is OK.
@@ -61,7 +76,23 @@ class FusionNode {
   const FusionOutput* on_odometry(const OdometrySample& sample, int64_t now_mono_us, int64_t host_utime);
   /// One LASER_POSE message; a POSE to publish while odometry is silent.
   std::optional<FusionOutput> on_fix(const LaserFixInput& input, int64_t now_mono_us, int64_t host_utime);
+  /// One REFLECTOR_MATCHES message (measurements "detections"); never publishes by itself.
+  void on_matches(const MatchesInput& input, int64_t now_mono_us, int64_t host_utime);
 
+  /// The heartbeat gauges (name, integer value): the range bias and the odometry calibration
+  /// the filter estimates, and the mean squared Mahalanobis distance of accepted detections.
+  template <typename Set>
+  void for_each_gauge(Set&& set) const {
+    const FusionState& s = fusion_.state();
+    const auto sigma = [&](int i) { return std::sqrt(std::max(s.covariance(i, i), 0.0)); };
+    set("range_bias_um", std::llround(s.range_bias_m * 1e6));
+    set("range_bias_sigma_um", std::llround(sigma(StateIndex::kRangeBias) * 1e6));
+    set("odometry_error_xx_ppm", std::llround(s.odometry_error(0, 0) * 1e6));
+    set("odometry_error_yy_ppm", std::llround(s.odometry_error(1, 1) * 1e6));
+    set("odometry_error_turn_ppm", std::llround(s.odometry_error(2, 2) * 1e6));
+    set("odometry_error_turn_per_x_ppm", std::llround(s.odometry_error(2, 0) * 1e6));
+    set("detection_nis_milli", std::llround(nis_mean_ * 1e3));
+  }
   /// Counters and log lines of the last on_odometry / on_fix call.
   const std::vector<NodeEvent>& events() const { return events_; }
   /// The heartbeat state at now_mono_us, from what was published.
@@ -86,6 +117,9 @@ class FusionNode {
   StampGuard fix_stamps_;
   StreamGapCounter odometry_gaps_;
   StreamGapCounter fix_gaps_;
+  InputStreamChecks match_checks_{"matches", chain_stream_stamp_limits()};
+  DetectionScan scan_;
+  double nis_mean_ = 0.0;  ///< moving mean over ~50 scans of accepted detections' Mahalanobis^2
   int32_t reflectors_used_ = 0;
   FusionStatus published_status_ = FusionStatus::kInitializing;  ///< of the filter, for the log
   FusionStatus output_status_ = FusionStatus::kInitializing;     ///< of the latest POSE published

@@ -5,37 +5,103 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
+#include <cmath>
+#include <limits>
+
 namespace refloc {
 namespace {
 
-Eigen::Vector3d innovation(const Pose2& x, const Pose2& z) {
-  return {z.x - x.x, z.y - x.y, angle_diff(z.theta, x.theta)};
+using StateVector = Eigen::Matrix<double, kStateDim, 1>;
+
+Eigen::Matrix2d rotation(double theta) { return Pose2{0.0, 0.0, theta}.rotation(); }
+
+void add_to_state(FusionState& state, const StateVector& dx) {
+  Pose2& p = state.map_T_robot;
+  p = {p.x + dx(0), p.y + dx(1), wrap_angle(p.theta + dx(2))};
+  state.range_bias_m += dx(StateIndex::kRangeBias);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) state.odometry_error(r, c) += dx(StateIndex::kOdometryError + 3 * r + c);
+}
+
+/// P - K H P with K = P H^T S^-1, kept symmetric. Cheaper than the Joseph form and
+/// equal to it for the optimal gain; the symmetrisation keeps rounding from accumulating.
+template <int M>
+void correct(FusionState& state, const Eigen::Matrix<double, M, 1>& y,
+             const Eigen::Matrix<double, M, kStateDim>& h, const Eigen::Matrix<double, M, M>& s) {
+  const Eigen::Matrix<double, M, kStateDim> hp = h * state.covariance;
+  const Eigen::Matrix<double, kStateDim, M> k = (s.ldlt().solve(hp)).transpose();
+  add_to_state(state, k * y);
+  state.covariance -= k * hp;
+  state.covariance = 0.5 * (state.covariance + state.covariance.transpose()).eval();
 }
 
 }  // namespace
 
-PoseEstimate ekf_predict(const PoseEstimate& prior, const Pose2& delta, const Eigen::Matrix3d& q) {
-  return {prior.map_T_robot * delta, compose_covariance(prior.map_T_robot, prior.covariance, delta, q)};
+void ekf_predict(FusionState& state, const Pose2& measured_delta, const Eigen::Matrix3d& q, double dt_s,
+                 const StateRandomWalk& walk) {
+  const Eigen::Vector3d d(measured_delta.x, measured_delta.y, measured_delta.theta);
+  const Eigen::Vector3d corrected = d + state.odometry_error * d;
+  const Pose2 delta{corrected.x(), corrected.y(), corrected.z()};
+  StateCovariance f = StateCovariance::Identity();
+  f.topLeftCorner<3, 3>() = compose_jacobian_lhs(state.map_T_robot, delta);
+  const Eigen::Matrix3d g = compose_jacobian_rhs(state.map_T_robot);
+  // d(E d)/dE for E row-major: row r of E multiplies d.
+  for (int r = 0; r < 3; ++r) f.block<3, 3>(0, StateIndex::kOdometryError + 3 * r) = g.col(r) * d.transpose();
+  state.map_T_robot = state.map_T_robot * delta;
+  StateCovariance p = f * state.covariance * f.transpose();
+  p.topLeftCorner<3, 3>() += g * q * g.transpose();
+  p(StateIndex::kRangeBias, StateIndex::kRangeBias) +=
+      walk.range_bias_m_per_sqrt_s * walk.range_bias_m_per_sqrt_s * std::max(dt_s, 0.0);
+  const double motion = std::hypot(d.x(), d.y()) + std::abs(d.z());
+  const double e_var = walk.odometry_error_per_sqrt_m * walk.odometry_error_per_sqrt_m * motion;
+  for (int i = 0; i < 9; ++i) p(StateIndex::kOdometryError + i, StateIndex::kOdometryError + i) += e_var;
+  state.covariance = p;
 }
 
-double mahalanobis_squared(const PoseEstimate& prior, const Pose2& z, const Eigen::Matrix3d& r) {
-  const Eigen::Vector3d y = innovation(prior.map_T_robot, z);
-  const Eigen::Matrix3d s = prior.covariance + r;
+double pose_mahalanobis_squared(const FusionState& state, const Pose2& z, const Eigen::Matrix3d& r) {
+  const Pose2& x = state.map_T_robot;
+  const Eigen::Vector3d y(z.x - x.x, z.y - x.y, angle_diff(z.theta, x.theta));
+  const Eigen::Matrix3d s = state.covariance.topLeftCorner<3, 3>() + r;
   return y.dot(s.ldlt().solve(y));
 }
 
-PoseEstimate ekf_correct(const PoseEstimate& prior, const Pose2& z, const Eigen::Matrix3d& r) {
-  const Eigen::Vector3d y = innovation(prior.map_T_robot, z);
-  const Eigen::Matrix3d s = prior.covariance + r;
-  const Eigen::Matrix3d k = prior.covariance * s.inverse();
-  const Eigen::Vector3d dx = k * y;
-  PoseEstimate posterior;
-  posterior.map_T_robot = {prior.map_T_robot.x + dx.x(), prior.map_T_robot.y + dx.y(),
-                           wrap_angle(prior.map_T_robot.theta + dx.z())};
-  const Eigen::Matrix3d i_k = Eigen::Matrix3d::Identity() - k;
-  posterior.covariance = i_k * prior.covariance * i_k.transpose() + k * r * k.transpose();
-  posterior.covariance = 0.5 * (posterior.covariance + posterior.covariance.transpose());
-  return posterior;
+void ekf_correct_pose(FusionState& state, const Pose2& z, const Eigen::Matrix3d& r) {
+  const Pose2& x = state.map_T_robot;
+  const Eigen::Vector3d y(z.x - x.x, z.y - x.y, angle_diff(z.theta, x.theta));
+  Eigen::Matrix<double, 3, kStateDim> h = Eigen::Matrix<double, 3, kStateDim>::Zero();
+  h.leftCols<3>().setIdentity();
+  const Eigen::Matrix3d s = state.covariance.topLeftCorner<3, 3>() + r;
+  correct<3>(state, y, h, s);
+}
+
+DetectionInnovation detection_innovation(const FusionState& state, const MatchedDetection& detection,
+                                         const Pose2& robot_T_laser, double map_variance) {
+  const Pose2 map_T_laser = state.map_T_robot * robot_T_laser;
+  const Eigen::Matrix2d laser_R_map = rotation(map_T_laser.theta).transpose();
+  const Eigen::Vector2d predicted_no_bias =
+      laser_R_map * (detection.map_point - Eigen::Vector2d(map_T_laser.x, map_T_laser.y));
+  const double measured_range = detection.laser_point.norm();
+  const Eigen::Vector2d u = measured_range > 0.0 ? Eigen::Vector2d(detection.laser_point / measured_range)
+                                                 : Eigen::Vector2d::Zero();
+  DetectionInnovation out;
+  out.y = detection.laser_point - (predicted_no_bias + state.range_bias_m * u);
+  const Eigen::Matrix2d skew = (Eigen::Matrix2d() << 0.0, -1.0, 1.0, 0.0).finished();
+  out.h.leftCols<2>() = -laser_R_map;
+  // d/dtheta of R(theta_L)^T (m - t_L), with t_L = t + R(theta) l and theta_L = theta + mount theta.
+  out.h.col(2) = -skew * predicted_no_bias -
+                 rotation(-robot_T_laser.theta) * skew * Eigen::Vector2d(robot_T_laser.x, robot_T_laser.y);
+  out.h.col(StateIndex::kRangeBias) = u;
+  out.r = detection.covariance + map_variance * Eigen::Matrix2d::Identity();
+  out.s = out.h * state.covariance * out.h.transpose() + out.r;
+  const Eigen::LDLT<Eigen::Matrix2d> ldlt(out.s);
+  out.mahalanobis_squared = ldlt.info() == Eigen::Success && ldlt.isPositive()
+                                ? out.y.dot(ldlt.solve(out.y))
+                                : std::numeric_limits<double>::quiet_NaN();
+  return out;
+}
+
+void ekf_correct_detection(FusionState& state, const DetectionInnovation& innovation) {
+  correct<2>(state, innovation.y, innovation.h, innovation.s);
 }
 
 }  // namespace refloc

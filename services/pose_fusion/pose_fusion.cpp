@@ -1,3 +1,6 @@
+// PoseFusion: the odometry history, (re-)initialisation and both measurement kinds;
+// longer than 300 lines because pose fixes and detection scans share one rollback
+// and one status rule.
 #include "pose_fusion/pose_fusion.hpp"
 
 #include "common/se2.hpp"
@@ -20,14 +23,42 @@ const char* to_string(FusionStatus status) {
   return "?";
 }
 
-PoseFusion::PoseFusion(const FusionConfig& config) : config_(config) {}
+namespace {
 
-const PoseEstimate& PoseFusion::estimate() const { return posterior(static_cast<long>(steps_.size()) - 1); }
+/// The prior of the states besides the pose, before any measurement.
+void set_model_prior(FusionState& state, const FusionModel& model) {
+  state.range_bias_m = 0.0;
+  state.odometry_error.setZero();
+  state.covariance.setZero();
+  const double b_sigma = model.estimate_range_bias ? model.range_bias_prior_sigma_m : 0.0;
+  state.covariance(StateIndex::kRangeBias, StateIndex::kRangeBias) = b_sigma * b_sigma;
+  const double e_sigma = model.estimate_odometry_error ? model.odometry_error_prior_sigma : 0.0;
+  for (int i = 0; i < 9; ++i)
+    state.covariance(StateIndex::kOdometryError + i, StateIndex::kOdometryError + i) = e_sigma * e_sigma;
+}
+
+}  // namespace
+
+PoseFusion::PoseFusion(const FusionConfig& config) : config_(config) {
+  const FusionModel& m = config.model;
+  walk_.range_bias_m_per_sqrt_s = m.estimate_range_bias ? m.range_bias_drift_m_per_sqrt_s : 0.0;
+  walk_.odometry_error_per_sqrt_m = m.estimate_odometry_error ? m.odometry_error_walk_per_sqrt_m : 0.0;
+  set_model_prior(base_, m);
+}
+
+const FusionState& PoseFusion::state() const { return posterior(static_cast<long>(steps_.size()) - 1); }
 
 int64_t PoseFusion::utime() const { return steps_.empty() ? base_utime_ : steps_.back().utime; }
 
-const PoseEstimate& PoseFusion::posterior(long i) const {
+const FusionState& PoseFusion::posterior(long i) const {
   return i < 0 ? base_ : steps_[static_cast<size_t>(i)].posterior;
+}
+
+std::pair<double, int> PoseFusion::take_detection_nis() {
+  const std::pair<double, int> out{nis_sum_, nis_count_};
+  nis_sum_ = 0.0;
+  nis_count_ = 0;
+  return out;
 }
 
 bool PoseFusion::lost(int64_t now_utime) const {
@@ -47,12 +78,14 @@ FusionStatus PoseFusion::status(int64_t now_utime) const {
 
 bool PoseFusion::add_odometry(int64_t utime, const Pose2& delta, const Eigen::Matrix3d& q) {
   if (utime <= this->utime()) return false;
+  const int64_t start = this->utime();
   has_odometry_ = true;
   Step step;
   step.utime = utime;
   step.delta = delta;
   step.q = q;
-  step.posterior = ekf_predict(estimate(), delta, q);
+  step.posterior = state();
+  ekf_predict(step.posterior, delta, q, static_cast<double>(utime - start) * 1e-6, walk_);
   steps_.push_back(std::move(step));
   trim_history();
   apply_deferred_fixes();
@@ -69,13 +102,18 @@ bool PoseFusion::add_odometry_seam(int64_t utime, const Pose2& delta, const Eige
 void PoseFusion::apply_deferred_fixes() {
   deferred_results_.clear();
   if (deferred_.empty()) return;
-  std::vector<PoseFix> due;
   const int64_t now = utime();
   auto it = std::stable_partition(deferred_.begin(), deferred_.end(),
-                                  [&](const PoseFix& f) { return f.utime > now; });
-  due.assign(it, deferred_.end());
+                                  [&](const Measurement& m) { return m.utime > now; });
+  std::vector<Measurement> due(std::make_move_iterator(it), std::make_move_iterator(deferred_.end()));
   deferred_.erase(it, deferred_.end());
-  for (const PoseFix& fix : due) deferred_results_.push_back(add_fix(fix));
+  for (Measurement& m : due) {
+    if (m.is_scan) {
+      deferred_results_.push_back(add_detections({m.utime, std::move(m.detections)}).result);
+    } else {
+      deferred_results_.push_back(add_fix(m.fix));
+    }
+  }
 }
 
 void PoseFusion::trim_history() {
@@ -87,12 +125,22 @@ void PoseFusion::trim_history() {
   }
 }
 
+void PoseFusion::apply(FusionState& state, const Measurement& m) const {
+  if (!m.is_scan) {
+    ekf_correct_pose(state, m.fix.map_T_robot, m.fix.covariance);
+    return;
+  }
+  const double map_variance = config_.model.map_sigma_m * config_.model.map_sigma_m;
+  for (const MatchedDetection& d : m.detections)
+    ekf_correct_detection(state, detection_innovation(state, d, config_.model.robot_T_laser, map_variance));
+}
+
 void PoseFusion::recompute(size_t i) {
   Step& step = steps_[i];
-  step.posterior = ekf_predict(posterior(static_cast<long>(i) - 1), step.delta, step.q);
-  for (const AppliedFix& fix : step.fixes) {
-    step.posterior = ekf_correct(step.posterior, fix.map_T_robot, fix.covariance);
-  }
+  const int64_t start = i == 0 ? base_utime_ : steps_[i - 1].utime;
+  step.posterior = posterior(static_cast<long>(i) - 1);
+  ekf_predict(step.posterior, step.delta, step.q, static_cast<double>(step.utime - start) * 1e-6, walk_);
+  for (const Measurement& m : step.measurements) apply(step.posterior, m);
 }
 
 void PoseFusion::repropagate_from(size_t first) {
@@ -123,23 +171,53 @@ long PoseFusion::step_ending_at(int64_t t) {
 void PoseFusion::initialise(const PoseFix& fix) {
   // Everything before the fix is forgotten: the fix becomes the base and the
   // odometry after it is re-applied. A fix newer than the latest odometry is
-  // taken as a fix at that time (one encoder period at most).
+  // taken as a fix at that time (one encoder period at most). The range bias and
+  // the odometry's calibration are the robot's, not the pose's: they are kept, without
+  // their correlation with the pose that was lost.
+  FusionState carried;
   if (!steps_.empty() && fix.utime < utime()) {
     const long i = step_ending_at(std::max(fix.utime, base_utime_));
+    carried = posterior(i);
     base_utime_ = i < 0 ? base_utime_ : steps_[static_cast<size_t>(i)].utime;
     steps_.erase(steps_.begin(), steps_.begin() + (i + 1));
-    for (Step& step : steps_) step.fixes.clear();  // accepted by the filter that got lost
+    for (Step& step : steps_) step.measurements.clear();  // accepted by the filter that got lost
   } else {
+    carried = state();
     base_utime_ = steps_.empty() && base_utime_ == 0 ? fix.utime : utime();
     steps_.clear();
   }
-  base_ = {fix.map_T_robot, fix.covariance};
+  if (!initialised_) set_model_prior(carried, config_.model);
+  base_ = carried;
+  base_.map_T_robot = fix.map_T_robot;
+  base_.covariance.topRows<3>().setZero();
+  base_.covariance.leftCols<3>().setZero();
+  base_.covariance.topLeftCorner<3, 3>() = fix.covariance;
   repropagate_from(0);
   initialised_ = true;
   seam_utime_ = -1;
   lost_by_rejections_ = false;
   consecutive_rejections_ = 0;
   last_accepted_fix_utime_ = fix.utime;
+}
+
+bool PoseFusion::waits_for_odometry(int64_t t) const {
+  return static_cast<double>(t - utime()) > config_.max_fix_lead * 1e6;
+}
+
+void PoseFusion::defer(Measurement m) {
+  if (deferred_.size() >= config_.max_deferred_fixes) deferred_.erase(deferred_.begin());
+  deferred_.push_back(std::move(m));
+}
+
+void PoseFusion::commit(long i, Measurement m) {
+  if (i < 0) {
+    apply(base_, m);
+    repropagate_from(0);
+  } else {
+    steps_[static_cast<size_t>(i)].measurements.push_back(std::move(m));
+    recompute(static_cast<size_t>(i));
+    repropagate_from(static_cast<size_t>(i) + 1);
+  }
 }
 
 FixResult PoseFusion::add_fix(const PoseFix& fix) {
@@ -156,30 +234,81 @@ FixResult PoseFusion::add_fix(const PoseFix& fix) {
     initialise(fix);
     return FixResult::kInitialised;
   }
+  Measurement m;
+  m.utime = fix.utime;
+  m.fix = fix;
   if (fix.utime < base_utime_) return FixResult::kTooOld;
-  if (static_cast<double>(fix.utime - utime()) > config_.max_fix_lead * 1e6) {
-    if (deferred_.size() >= config_.max_deferred_fixes) deferred_.erase(deferred_.begin());
-    deferred_.push_back(fix);
+  if (waits_for_odometry(fix.utime)) {
+    defer(std::move(m));
     return FixResult::kDeferred;
   }
   // A fix newer than the latest odometry by at most max_fix_lead is applied to the latest estimate.
   const long i = step_ending_at(std::min(fix.utime, utime()));
-  last_mahalanobis_squared_ = mahalanobis_squared(posterior(i), fix.map_T_robot, fix.covariance);
+  last_mahalanobis_squared_ = pose_mahalanobis_squared(posterior(i), fix.map_T_robot, fix.covariance);
   if (!(last_mahalanobis_squared_ <= config_.gate_chi2)) {  // NaN fails the gate
     if (++consecutive_rejections_ >= config_.max_consecutive_rejections) lost_by_rejections_ = true;
     return FixResult::kRejectedGate;
   }
   consecutive_rejections_ = 0;
   last_accepted_fix_utime_ = std::max(last_accepted_fix_utime_, fix.utime);
-  if (i < 0) {
-    base_ = ekf_correct(base_, fix.map_T_robot, fix.covariance);
-    repropagate_from(0);
-  } else {
-    steps_[static_cast<size_t>(i)].fixes.push_back({fix.map_T_robot, fix.covariance});
-    recompute(static_cast<size_t>(i));
-    repropagate_from(static_cast<size_t>(i) + 1);
-  }
+  commit(i, std::move(m));
   return FixResult::kAccepted;
+}
+
+ScanResult PoseFusion::add_detections(const DetectionScan& scan) {
+  if (has_odometry_) {
+    if (!(static_cast<double>(scan.utime - utime()) <= config_.history * 1e6))
+      return {FixResult::kAheadOfOdometry};
+    if (scan.utime < base_utime_) return {FixResult::kTooOld};
+  }
+  if (needs_initialisation()) return {FixResult::kWaitingForGood};
+  if (scan.utime < base_utime_) return {FixResult::kTooOld};
+  if (waits_for_odometry(scan.utime)) {
+    Measurement m;
+    m.utime = scan.utime;
+    m.is_scan = true;
+    m.detections = scan.detections;
+    defer(std::move(m));
+    return {FixResult::kDeferred};
+  }
+  return apply_scan(scan);
+}
+
+ScanResult PoseFusion::apply_scan(const DetectionScan& scan) {
+  const long i = step_ending_at(std::min(scan.utime, utime()));
+  const FusionState& prior = posterior(i);
+  const double map_variance = config_.model.map_sigma_m * config_.model.map_sigma_m;
+  ScanResult result;
+  Measurement m;
+  m.utime = scan.utime;
+  m.is_scan = true;
+  // Every detection is gated against the estimate before this scan, so the order of a
+  // scan's detections decides nothing and one wrong association cannot open the gate
+  // for another.
+  double nis = 0.0;
+  for (const MatchedDetection& d : scan.detections) {
+    const DetectionInnovation in = detection_innovation(prior, d, config_.model.robot_T_laser, map_variance);
+    if (in.mahalanobis_squared <= config_.model.detection_gate_chi2) {  // NaN fails the gate
+      m.detections.push_back(d);
+      nis += in.mahalanobis_squared;
+    }
+  }
+  result.accepted = static_cast<int>(m.detections.size());
+  result.rejected = static_cast<int>(scan.detections.size()) - result.accepted;
+  last_mahalanobis_squared_ = result.accepted > 0 ? nis / result.accepted : 0.0;
+  if (result.accepted == 0 || result.rejected > result.accepted) {
+    if (++consecutive_rejections_ >= config_.max_consecutive_rejections) lost_by_rejections_ = true;
+    result.result = FixResult::kRejectedGate;
+    return result;
+  }
+  nis_sum_ += nis;
+  nis_count_ += result.accepted;
+  consecutive_rejections_ = 0;
+  if (result.accepted >= config_.model.min_detections_for_fix)
+    last_accepted_fix_utime_ = std::max(last_accepted_fix_utime_, scan.utime);
+  commit(i, std::move(m));
+  result.result = FixResult::kAccepted;
+  return result;
 }
 
 }  // namespace refloc

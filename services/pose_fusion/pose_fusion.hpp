@@ -1,12 +1,21 @@
 #pragma once
-// Fusion of wheel odometry with absolute laser pose fixes that arrive late.
+// Fusion of wheel odometry with laser measurements that arrive late: the matched
+// reflector detections of each scan (the default) or the solver's single-scan pose fixes.
 //
-// A laser fix describes the pose at its scan's time, typically 30-80 ms before
-// it arrives, while odometry has moved on. The filter keeps a short history of
-// odometry steps with the estimate after each; a fix is applied AT ITS OWN
+// A scan describes the robot at its scan's time, typically 20-80 ms before it
+// arrives, while odometry has moved on. The filter keeps a short history of
+// odometry steps with the estimate after each; a measurement is applied AT ITS OWN
 // TIME (the step spanning that time is split), and every later step is
-// re-applied on top. Accepted fixes stay in the history, so a fix older than
-// another one that already arrived is still handled exactly.
+// re-applied on top. Accepted measurements stay in the history, so one older than
+// another that already arrived is still handled exactly. The state carries the
+// laser's range bias and the odometry's calibration error besides the pose (pose_ekf.hpp).
+//
+// Detections are gated one by one against the estimate at their scan's time (chi-square,
+// 2 dof): a wrong association is dropped and counted, it never pulls the pose. A scan
+// with more detections refused than accepted is refused whole (the estimate, not the
+// detections, is then the suspect) and counts towards max_consecutive_rejections. A scan
+// is a fresh fix for the status when at least min_detections_for_fix were accepted.
+// Detections never initialise the filter: a pose fix (the solver's OK) does.
 //
 // Status: INITIALIZING until the first good fix; OK while the last accepted fix
 // is at most degraded_after old; DEGRADED after that; LOST after lost_after, or
@@ -24,11 +33,27 @@
 
 #include <cstdint>
 #include <deque>
+#include <utility>
 #include <vector>
 
 namespace refloc {
 
+/// The states besides the pose: their priors and random walks.
+struct FusionModel {
+  bool estimate_range_bias = true;
+  double range_bias_prior_sigma_m = 0.03;         ///< the LMS100's systematic error spec [m]
+  double range_bias_drift_m_per_sqrt_s = 0.0002;  ///< [m/sqrt(s)]
+  bool estimate_odometry_error = true;
+  double odometry_error_prior_sigma = 0.02;        ///< per element of E (2 %: worn rollers)
+  double odometry_error_walk_per_sqrt_m = 0.0005;  ///< per element of E [1/sqrt(m)]
+  double map_sigma_m = 0.001;                      ///< the map positions' error, per axis [m]
+  double detection_gate_chi2 = 13.82;              ///< chi-square 2 dof at 99.9 %
+  int min_detections_for_fix = 2;                  ///< accepted detections that make a scan a fresh fix
+  Pose2 robot_T_laser{0.30, 0.0, 0.0};             ///< the laser mount (robot.json)
+};
+
 struct FusionConfig {
+  FusionModel model;
   double history = 1.0;  ///< how far back a fix can be applied [s]
   /// A fix newer than the latest odometry by more than this waits for odometry
   /// to reach its time (odometry is late or its service is restarting). Applied
@@ -54,6 +79,12 @@ struct PoseFix {
   FixQuality quality = FixQuality::kGood;
 };
 
+/// The matched detections of one scan, compensated to its time.
+struct DetectionScan {
+  int64_t utime = 0;  ///< the scan's time [us]
+  std::vector<MatchedDetection> detections;
+};
+
 enum class FixResult {
   kAccepted,
   kInitialised,      ///< the filter was (re-)initialised from this fix
@@ -62,6 +93,13 @@ enum class FixResult {
   kWaitingForGood,   ///< not initialised and the fix is not good enough to start from
   kDeferred,         ///< ahead of odometry: applied when odometry reaches its time
   kAheadOfOdometry,  ///< newer than the latest odometry by more than the history: refused
+};
+
+/// What became of one scan's detections.
+struct ScanResult {
+  FixResult result = FixResult::kWaitingForGood;
+  int accepted = 0;  ///< detections applied
+  int rejected = 0;  ///< detections outside the gate
 };
 
 class PoseFusion {
@@ -78,11 +116,18 @@ class PoseFusion {
 
   /// An absolute pose fix; applied at fix.utime.
   FixResult add_fix(const PoseFix& fix);
+  /// One scan's matched detections, applied at scan.utime (kWaitingForGood while the filter
+  /// needs a pose fix to start).
+  ScanResult add_detections(const DetectionScan& scan);
+  /// True when only a pose fix can go on: not initialised, or lost at the latest odometry time.
+  bool needs_initialisation() const { return !initialised_ || lost(utime()); }
 
   /// Status at now_utime [us] (normally the latest odometry time).
   FusionStatus status(int64_t now_utime) const;
-  /// The estimate after the latest odometry step.
-  const PoseEstimate& estimate() const;
+  /// The pose estimate after the latest odometry step.
+  PoseEstimate estimate() const { return state().pose(); }
+  /// The whole state after the latest odometry step.
+  const FusionState& state() const;
   /// Time of estimate() [us].
   int64_t utime() const;
   bool initialised() const { return initialised_; }
@@ -91,28 +136,42 @@ class PoseFusion {
   int consecutive_rejections() const { return consecutive_rejections_; }
   double last_mahalanobis_squared() const { return last_mahalanobis_squared_; }
   size_t deferred_fixes() const { return deferred_.size(); }
-  /// Results of deferred fixes applied by the last add_odometry call.
+  /// Results of deferred measurements applied by the last add_odometry call (scans: their
+  /// whole-scan result).
   const std::vector<FixResult>& deferred_results() const { return deferred_results_; }
+  /// Sum and count of the squared Mahalanobis distances of accepted detections since the
+  /// last take_detection_nis() (an honest filter averages 2).
+  std::pair<double, int> take_detection_nis();
 
  private:
-  struct AppliedFix {
-    Pose2 map_T_robot;
-    Eigen::Matrix3d covariance;
+  /// A pose fix, or the accepted detections of one scan.
+  struct Measurement {
+    int64_t utime = 0;
+    bool is_scan = false;
+    PoseFix fix;
+    std::vector<MatchedDetection> detections;
   };
   struct Step {
     int64_t utime = 0;  ///< end of the step (start: the previous step's or the base's utime)
     Pose2 delta;
     Eigen::Matrix3d q = Eigen::Matrix3d::Zero();
-    std::vector<AppliedFix> fixes;  ///< accepted fixes at utime, re-applied on every rollback
-    PoseEstimate posterior;         ///< after delta and the fixes
+    std::vector<Measurement> measurements;  ///< accepted at utime, re-applied on every rollback
+    FusionState posterior;                  ///< after delta and the measurements
   };
 
   bool lost(int64_t now_utime) const;
   void initialise(const PoseFix& fix);
+  /// A measurement at t is ahead of odometry by more than max_fix_lead.
+  bool waits_for_odometry(int64_t t) const;
+  void defer(Measurement m);
+  void apply(FusionState& state, const Measurement& m) const;
   /// Index of a step ending exactly at t (splitting the step spanning t), or -1
   /// for the base. Requires base_utime_ <= t <= utime().
   long step_ending_at(int64_t t);
-  const PoseEstimate& posterior(long i) const;
+  /// Store m (accepted) at step i and re-apply everything after it.
+  void commit(long i, Measurement m);
+  ScanResult apply_scan(const DetectionScan& scan);
+  const FusionState& posterior(long i) const;
   /// Recompute step i's posterior from its predecessor, its delta and its fixes.
   void recompute(size_t i);
   void repropagate_from(size_t first);
@@ -120,18 +179,21 @@ class PoseFusion {
   void apply_deferred_fixes();
 
   FusionConfig config_;
+  StateRandomWalk walk_;
   bool initialised_ = false;
   bool has_odometry_ = false;
   bool lost_by_rejections_ = false;
-  PoseEstimate base_;
+  FusionState base_;
   int64_t base_utime_ = 0;
   std::deque<Step> steps_;
   int64_t last_accepted_fix_utime_ = 0;
   int consecutive_rejections_ = 0;
   double last_mahalanobis_squared_ = 0.0;
   int64_t seam_utime_ = -1;  ///< start of the latest odometry seam [us]
-  std::vector<PoseFix> deferred_;
+  std::vector<Measurement> deferred_;
   std::vector<FixResult> deferred_results_;
+  double nis_sum_ = 0.0;
+  int nis_count_ = 0;
 };
 
 const char* to_string(FusionStatus status);

@@ -7,7 +7,6 @@
 #include "pose_solver/solver_node.hpp"
 
 #include <refloc/pose2d_t.hpp>
-#include <refloc/reflector_matches_t.hpp>
 
 #include <vector>
 
@@ -16,18 +15,6 @@ namespace refloc {
 inline MatchVerdict match_verdict_from_message(int8_t status) {
   if (status == reflector_matches_t::STATUS_OK) return MatchVerdict::kOk;
   return status == reflector_matches_t::STATUS_AMBIGUOUS ? MatchVerdict::kAmbiguous : MatchVerdict::kLost;
-}
-
-/// The matches of one REFLECTOR_MATCHES message. Each match carries its detection, so
-/// the solver sees them as detections 0..n-1.
-inline void matches_from_message(const reflector_matches_t& msg, std::vector<ReflectorDetection>& detections,
-                                 std::vector<ReflectorMatch>& matches) {
-  detections.clear();
-  matches.clear();
-  for (const reflector_match_t& m : msg.matches) {
-    matches.push_back({static_cast<int>(detections.size()), m.map_id, {m.map_x, m.map_y}, m.map_radius});
-    detections.push_back(from_lcm(m.detection));
-  }
 }
 
 /// LASER_POSE from one fix.

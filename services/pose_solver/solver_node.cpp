@@ -7,23 +7,6 @@
 
 namespace refloc {
 
-InputFault check_matches(const std::vector<ReflectorDetection>& detections,
-                         const std::vector<ReflectorMatch>& matches) {
-  if (InputFault f = check_reflector_detections(detections)) return f;
-  for (size_t i = 0; i < matches.size(); ++i) {
-    const ReflectorMatch& m = matches[i];
-    if (!all_finite({m.map_p_center.x(), m.map_p_center.y(), m.map_radius}))
-      return {"nonfinite", fmt::format("match #{}: map reflector with a non-finite field", i)};
-    if (!finite_abs_at_most(m.map_p_center.x(), MatchBounds::kMaxAbsCoordinate_m) ||
-        !finite_abs_at_most(m.map_p_center.y(), MatchBounds::kMaxAbsCoordinate_m) ||
-        !(m.map_radius > 0.0 && m.map_radius <= MatchBounds::kMaxRadius_m) || m.detection_index < 0 ||
-        m.detection_index >= static_cast<int>(detections.size()))
-      return {"out_of_bounds", fmt::format("match #{}: map reflector {} at ({}, {}) m, radius {} m", i,
-                                           m.map_id, m.map_p_center.x(), m.map_p_center.y(), m.map_radius)};
-  }
-  return {};
-}
-
 const SolverOutput& SolverNode::on_message(int64_t utime, int64_t scan_counter, MatchVerdict verdict,
                                            const std::vector<ReflectorDetection>& detections,
                                            const std::vector<ReflectorMatch>& matches, int64_t host_utime) {

@@ -18,17 +18,6 @@
 
 namespace refloc {
 
-/// The bounds of a match's map side.
-struct MatchBounds {
-  static constexpr double kMaxAbsCoordinate_m = 1e4;  ///< no site is 10 km across
-  static constexpr double kMaxRadius_m = 1.0;         ///< reflector cylinders are centimetres wide
-};
-
-/// Every detection usable (check_reflector_detection) and every map position finite within
-/// kMaxAbsCoordinate_m with 0 < radius <= kMaxRadius_m; the first failure decides.
-InputFault check_matches(const std::vector<ReflectorDetection>& detections,
-                         const std::vector<ReflectorMatch>& matches);
-
 /// What one REFLECTOR_MATCHES did.
 struct SolverOutput {
   /// false: rejected (events say why): nothing to publish.

@@ -18,6 +18,13 @@
 namespace refloc {
 namespace {
 
+/// These tests drive the filter with LASER_POSE alone (detections: detection_fusion_test.cpp).
+FusionServiceConfig laser_pose_config() {
+  FusionServiceConfig c;
+  c.measurements = FusionMeasurements::kLaserPose;
+  return c;
+}
+
 constexpr int64_t kT0 = 1'700'000'000'000'000;  // a plausible wall-clock stamp [us]
 constexpr int64_t kPeriod = 10'000;             // odometry at 100 Hz
 constexpr int64_t kLatency = 3'000;             // host clock when a message arrives, after its stamp
@@ -38,7 +45,7 @@ bool finite(const FusionOutput& p) {
 /// A robot driving +x at 0.5 m/s from the map origin, odometry and fixes both exact.
 class Drive {
  public:
-  Drive() : node(FusionServiceConfig{}, OdometryNoise{}) {}
+  Drive() : node(laser_pose_config(), OdometryNoise{}) {}
 
   OdometrySample odometry_at(int k) const {
     return {kT0 + k * kPeriod, {0.5, 0.0, 0.0}, Pose2{0.005 * k, 0.0, 0.0}, 0.005 * k};

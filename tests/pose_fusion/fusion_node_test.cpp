@@ -13,6 +13,13 @@
 namespace refloc {
 namespace {
 
+/// These tests drive the filter with LASER_POSE alone (detections: detection_fusion_test.cpp).
+FusionServiceConfig laser_pose_config() {
+  FusionServiceConfig c;
+  c.measurements = FusionMeasurements::kLaserPose;
+  return c;
+}
+
 constexpr int64_t kT0 = 100'000'000;
 constexpr int64_t kPeriod = 10'000;  // odometry at 100 Hz
 
@@ -59,7 +66,7 @@ TEST(UsableFix, OnlyOkAndDegradedWithAFinitePoseAndPositiveCovariance) {
 }
 
 TEST(FusionNode, UnusableFixIsCountedAndNeitherFusedNorPublished) {
-  FusionNode node(FusionServiceConfig{}, OdometryNoise{});
+  FusionNode node(laser_pose_config(), OdometryNoise{});
   EXPECT_FALSE(node.on_fix(fix_at(kT0, Pose2{}, FixStatus::kNoPose), 0, host(kT0)));
   EXPECT_EQ(count(node.events(), "fixes_unusable"), 1);
   EXPECT_EQ(node.events().size(), 1u);
@@ -67,7 +74,7 @@ TEST(FusionNode, UnusableFixIsCountedAndNeitherFusedNorPublished) {
 }
 
 TEST(FusionNode, DegradedFixCannotStartTheFilter) {
-  FusionNode node(FusionServiceConfig{}, OdometryNoise{});
+  FusionNode node(laser_pose_config(), OdometryNoise{});
   node.on_odometry(odometry_at(0), 0, host(odometry_at(0).utime));
   node.on_fix(fix_at(kT0, Pose2{}, FixStatus::kDegraded), 1000, host(kT0));
   EXPECT_EQ(count(node.events(), "fixes_not_good_enough_to_start"), 1);
@@ -75,7 +82,7 @@ TEST(FusionNode, DegradedFixCannotStartTheFilter) {
 }
 
 TEST(FusionNode, GoodFixInitialisesThenPoseIsOkWithItsReflectorCount) {
-  FusionNode node(FusionServiceConfig{}, OdometryNoise{});
+  FusionNode node(laser_pose_config(), OdometryNoise{});
   const FusionOutput* first = node.on_odometry(odometry_at(0), 0, host(odometry_at(0).utime));
   ASSERT_NE(first, nullptr);
   EXPECT_EQ(first->status, FusionStatus::kInitializing);
@@ -96,7 +103,7 @@ TEST(FusionNode, GoodFixInitialisesThenPoseIsOkWithItsReflectorCount) {
 }
 
 TEST(FusionNode, FixFarOffTheEstimateIsGatedAndCounted) {
-  FusionNode node(FusionServiceConfig{}, OdometryNoise{});
+  FusionNode node(laser_pose_config(), OdometryNoise{});
   node.on_odometry(odometry_at(0), 0, host(odometry_at(0).utime));
   node.on_fix(fix_at(kT0, Pose2{}), 1000, host(kT0));
   node.on_odometry(odometry_at(1), 10'000, host(odometry_at(1).utime));
@@ -106,7 +113,7 @@ TEST(FusionNode, FixFarOffTheEstimateIsGatedAndCounted) {
 }
 
 TEST(FusionNode, SilentOdometryPublishesEachNewFixAsDegraded) {
-  FusionServiceConfig config;
+  FusionServiceConfig config = laser_pose_config();
   config.odometry_timeout = 0.1;
   FusionNode node(config, OdometryNoise{});
   // No odometry at all: the fix is the POSE, DEGRADED, with its own values.
@@ -128,7 +135,7 @@ TEST(FusionNode, SilentOdometryPublishesEachNewFixAsDegraded) {
 }
 
 TEST(FusionNode, OdometryClockSteppedBackIsBelievedOnceItPersistsAndIsThenANewFrame) {
-  FusionNode node(FusionServiceConfig{}, OdometryNoise{});
+  FusionNode node(laser_pose_config(), OdometryNoise{});
   const int64_t stamp0 = odometry_at(10).utime;
   node.on_odometry(odometry_at(10), 0, host(stamp0));
   // The publisher's clock steps back by 1 s: its messages are refused (not newer than the
@@ -149,7 +156,7 @@ TEST(FusionNode, OdometryClockSteppedBackIsBelievedOnceItPersistsAndIsThenANewFr
 }
 
 TEST(FusionNode, OdometryGapAndRestartAreSeamsCountedSeparately) {
-  FusionNode node(FusionServiceConfig{}, OdometryNoise{});
+  FusionNode node(laser_pose_config(), OdometryNoise{});
   node.on_fix(fix_at(kT0, Pose2{}), 0, host(kT0));
   node.on_odometry(odometry_at(0), 0, host(odometry_at(0).utime));
   node.on_odometry(odometry_at(200), 10'000, host(odometry_at(200).utime));  // 2 s later in the same frame
