@@ -111,6 +111,7 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   result.matches.clear();
   result.hypothesis_score = 0.0;
   result.runner_up_score = 0.0;
+  result.runner_up_map_T_laser = Pose2{};
   result.ndetections = static_cast<int>(detections.size());
   scored_.clear();
   best_associations_.clear();
@@ -142,7 +143,10 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
     if (approx_equal(s.map_T_laser, best_pose, relocalization_.distinct_pose_distance,
                      relocalization_.distinct_pose_angle))
       continue;
-    runner_up = std::max(runner_up, s.score);
+    if (s.score > runner_up) {
+      runner_up = s.score;
+      result.runner_up_map_T_laser = s.map_T_laser;
+    }
     const double margin = best_score - s.score;
     rival = rival || margin < (1.0 - relocalization_.ambiguity_ratio) * best_matched ||
             (s.matched >= best_matched && margin < relocalization_.ambiguity_missed_margin);

@@ -28,6 +28,7 @@ struct MatchResult {
   std::vector<ReflectorMatch> matches;
   double hypothesis_score = 0.0;  ///< support of the chosen hypothesis (matched minus penalties)
   double runner_up_score = 0.0;   ///< best hypothesis that is a substantially different pose
+  Pose2 runner_up_map_T_laser;    ///< that hypothesis (global relocalization only; refloc-plan)
   Pose2 map_T_laser;              ///< hypothesis the matches were verified against
   int ndetections = 0;
 };

@@ -11,6 +11,9 @@
   refloc-plot.py drive --trace SOURCE=F.trace.csv [--trace ...] --world WORLD.json [--out F.png]
       refloc-eval drive: the true loop and each motion source's fixes over the map, and each
       source's fix error over time in mm (dots, and a 1 s running mean)
+  refloc-plot.py plan --grid OUT/grid.json [--out F.png] [--out F.svg]
+      refloc-plan's grid: reflectors seen, class (blind / fragile / ambiguous, with arrows to the
+      confusable pose), CRLB position and heading sigma, and before / after the suggestions
 
 The format follows each --out's extension (.png, .svg, .pdf). Exit codes: 0 written,
 64 usage error, 2 missing or bad input file, 1 anything else."""
@@ -35,6 +38,9 @@ class Parser(argparse.ArgumentParser):
 
 def load_inputs(args):
     """Every input file, read before matplotlib loads: a bad file fails fast."""
+    if args.command == "plan":
+        from refloc_plot_plan import load_plan
+        return {"plan": load_plan(args.grid)}
     world = load_world(args.world, args.map)
     if args.command == "mission":
         return {"trace": load_trace(args.trace), "world": world}
@@ -147,16 +153,20 @@ def main(argv):
     drive = sub.add_parser("drive", help="refloc-eval drive: fixes per motion source (its trace CSVs)")
     drive.add_argument("--trace", type=source_and_file, action="append", required=True,
                        help="SOURCE=FILE: a motion source's trace (repeatable)")
+    plan = sub.add_parser("plan", help="refloc-plan's grid.json: heat maps per quantity")
+    plan.add_argument("--grid", required=True, help="refloc-plan's grid.json (it holds the map and walls)")
     for p in (mission, evaluation, drive):
         p.add_argument("--world", required=True, help="the world file the run used (walls; its map_file)")
         p.add_argument("--map", help="reflector map (default: the world's map_file)")
+    for p in (mission, evaluation, drive, plan):
         p.add_argument("--out", action="append", help="picture file, format by extension (repeatable; "
                        "default: the input with .png)")
         p.add_argument("--title", help="title above the picture")
     args = parser.parse_args(argv)
     if args.command == "mission" and args.zoom_mm <= 0:
         parser.error(f"--zoom-mm must be above 0, got {args.zoom_mm}")
-    first_input = {"mission": lambda: args.trace, "eval": lambda: args.csv, "drive": lambda: args.trace[0][1]}
+    first_input = {"mission": lambda: args.trace, "eval": lambda: args.csv, "drive": lambda: args.trace[0][1],
+                   "plan": lambda: args.grid}
     outputs = args.out or [os.path.splitext(first_input[args.command]())[0] + ".png"]
     for out in outputs:
         if os.path.splitext(out)[1].lower() not in (".png", ".svg", ".pdf"):
@@ -176,7 +186,9 @@ def main(argv):
     matplotlib.rcParams["svg.fonttype"] = "none"  # SVG text stays text (searchable, smaller)
     import matplotlib.pyplot as plt
     from refloc_plot_studies import plot_drive, plot_eval
-    fig = {"mission": plot_mission, "eval": plot_eval, "drive": plot_drive}[args.command](args, inputs, plt)
+    from refloc_plot_plan import plot_plan
+    plots = {"mission": plot_mission, "eval": plot_eval, "drive": plot_drive, "plan": plot_plan}
+    fig = plots[args.command](args, inputs, plt)
     for out in outputs:
         try:
             fig.savefig(out, dpi=110)

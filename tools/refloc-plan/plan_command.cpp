@@ -1,0 +1,92 @@
+#include "plan_command.hpp"
+
+#include "layout_plan.hpp"
+#include "placement_suggestions.hpp"
+#include "plan_input.hpp"
+#include "plan_progress.hpp"
+#include "plan_report.hpp"
+
+#include "common/child_program.hpp"
+#include "common/json_config.hpp"
+#include "common/program_version.hpp"
+#include "common/robot_config.hpp"
+#include "reflector_matcher/matcher_config_file.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+
+namespace refloc {
+namespace {
+
+PlanConfig plan_config(const PlanOptions& o) {
+  PlanConfig c;
+  c.resolution = o.resolution_m;
+  c.headings = o.headings;
+  c.crlb_limit = 1e-3 * o.crlb_limit_mm;
+  c.range_sigma = 1e-3 * o.range_sigma_mm;
+  c.min_beams = o.min_beams;
+  c.spot.samples = o.spot_samples;
+  c.check_ambiguity = o.ambiguity;
+  c.robot_T_laser = load_robot_config(o.robot_file).robot_T_laser;
+  c.matcher = load_matcher_service_config(o.matcher_file).matcher;
+  return c;
+}
+
+}  // namespace
+
+int run_plan(const PlanOptions& o) {
+  PlanReport report;
+  report.config = plan_config(o);
+  PlanInput input = load_plan_input(o.map_file, o.world_file, o.occluders);
+  for (const std::string& w : input.map.warnings) fmt::print(stderr, "refloc-plan: {}\n", w);
+  report.map_name = input.map_name;
+  report.map = input.map;
+  report.drivable = input.drivable;
+  const bool terminal = o.progress && isatty(fileno(stderr));
+  PlanProgressBar bar(stderr, "planning", terminal);
+  const PlanProgress progress =
+      o.progress ? PlanProgress([&](size_t d, size_t t) { bar.update(d, t); }) : PlanProgress();
+  const PlanGrid grid = make_plan_grid(input.map, input.drivable, report.config.resolution);
+  const auto start = std::chrono::steady_clock::now();
+  report.plan = plan_layout(input.map, grid, report.config, progress);
+  report.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (o.suggest > 0) {
+    SuggestionConfig s;
+    s.count = o.suggest;
+    s.spacing = o.suggest_spacing_m;
+    s.resolution = o.suggest_resolution_m;
+    s.headings = o.suggest_headings;
+    PlanProgressBar suggest_bar(stderr, "suggesting", terminal);
+    report.suggestions = suggest_reflectors(
+        input.map, input.drivable, report.config, s,
+        o.progress ? PlanProgress([&](size_t d, size_t t) { suggest_bar.update(d, t); }) : PlanProgress());
+    if (!report.suggestions.empty()) {
+      const ReflectorMap after = with_suggestions(input.map, report.suggestions);
+      PlanProgressBar after_bar(stderr, "after", terminal);
+      report.plan_after = plan_layout(
+          after, grid, report.config,
+          o.progress ? PlanProgress([&](size_t d, size_t t) { after_bar.update(d, t); }) : PlanProgress());
+    } else {
+      fmt::print(stderr, "refloc-plan: no candidate position reduces the bad area (or there is none)\n");
+    }
+  }
+  write_plan_report(report, o.out_dir);
+  fmt::print("{}", plan_summary_text(report));
+  fmt::print("wrote {0}/grid.json, {0}/summary.txt\n", o.out_dir);
+  if (o.plot) {
+    const int status = run_child_program({shipped_path("tools/refloc-plot/refloc-plot.py"), "plan", "--grid",
+                                          o.out_dir + "/grid.json", "--out", o.out_dir + "/plan.png", "--out",
+                                          o.out_dir + "/plan.svg"});
+    if (status != 0) {
+      fmt::print(stderr,
+                 "refloc-plan: no picture (tools/refloc-plot needs /usr/bin/python3 and matplotlib)\n");
+    } else {
+      fmt::print("wrote {0}/plan.png, {0}/plan.svg\n", o.out_dir);
+    }
+  }
+  return 0;
+}
+
+}  // namespace refloc

@@ -1,0 +1,34 @@
+#pragma once
+// refloc-plan's run: read the inputs, plan the grid, suggest, write the report and draw it.
+
+#include <string>
+
+namespace refloc {
+
+/// Every option of refloc-plan with its default; units in the names.
+struct PlanOptions {
+  std::string map_file;    ///< "" = the world's map
+  std::string world_file;  ///< "" = none (no drivable area)
+  std::string occluders = "auto";
+  std::string robot_file = "deploy/config/robot.json";
+  std::string matcher_file = "deploy/config/reflector_matcher.json";
+  double resolution_m = 0.25;
+  int headings = 8;
+  double crlb_limit_mm = 10.0;
+  double range_sigma_mm = 12.0;
+  int min_beams = 2;
+  int spot_samples = 51;
+  bool ambiguity = true;
+  int suggest = 0;
+  double suggest_spacing_m = 1.0;
+  double suggest_resolution_m = 0.5;
+  int suggest_headings = 4;
+  std::string out_dir = "logs/refloc-plan";
+  bool plot = true;
+  bool progress = true;
+};
+
+/// 0 on success; throws ConfigError for bad input files (guarded_main turns it into exit 2).
+int run_plan(const PlanOptions& options);
+
+}  // namespace refloc

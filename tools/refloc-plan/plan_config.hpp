@@ -1,0 +1,46 @@
+#pragma once
+// What refloc-plan assumes about the sensor, the matcher and the grid: plain settings with
+// defaults in the declaration, the deployed values where a service file sets them.
+
+#include "beam_crlb.hpp"
+#include "reflector_matcher/matcher_config.hpp"
+
+#include "common/se2.hpp"
+
+#include <cmath>
+
+namespace refloc {
+
+/// The scan the laser takes (the LMS100 as the renderer models it).
+struct PlanScanGeometry {
+  double start_angle = -135.0 * M_PI / 180.0;   ///< beam 0 in the laser frame [rad]
+  double angle_increment = 0.5 * M_PI / 180.0;  ///< [rad]
+  int num_beams = 541;                          ///< [-]
+};
+
+struct PlanConfig {
+  double resolution = 0.25;  ///< grid cell side [m]
+  int headings = 8;          ///< robot headings per cell, evenly spaced from 0 [-]
+  /// A cell whose worst heading's CRLB position sigma is above this counts as inaccurate [m].
+  double crlb_limit = 0.010;
+  /// A reflector counts as visible with at least this many beam axes on its cylinder (the
+  /// deployed extractor's min_beams, deploy/config/reflector_extractor.json) [-].
+  int min_beams = 2;
+  Pose2 robot_T_laser{0.30, 0.0, 0.0};  ///< laser mount (robot.json's laser_mount) [m, m, rad]
+  PlanScanGeometry scan;
+  double range_sigma = 0.012;  ///< LMS100 statistical range noise, 1 sigma [m]
+  /// The beam-spot model of refloc-eval's bound; 51 rays instead of its 201 keep a grid fast
+  /// (the bound moves < 1 % between them in beam_crlb_test's coarse/fine comparison).
+  BeamSpotModel spot = [] {
+    BeamSpotModel m;
+    m.samples = 51;
+    return m;
+  }();
+  /// The matcher as deployed (deploy/config/reflector_matcher.json): range, field of view,
+  /// triangle index, verification and the rival rule.
+  MatcherConfig matcher;
+  /// Skip the relocalization check (no ambiguity figures; for quick CRLB-only grids).
+  bool check_ambiguity = true;
+};
+
+}  // namespace refloc

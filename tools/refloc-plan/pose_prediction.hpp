@@ -1,0 +1,74 @@
+#pragma once
+// What the localization should do at one robot pose, predicted from the map alone: which
+// reflectors the laser sees (the matcher's visibility rule plus the extractor's minimum beam
+// count), the beam-spot Cramér-Rao bound of a single-scan fix (refloc-eval's), and what the
+// matcher's global relocalization makes of those reflectors seen exactly (its own rival rule:
+// OK, AMBIGUOUS with a rival elsewhere, or OK at the wrong place).
+
+#include "plan_config.hpp"
+
+#include "reflector_matcher/global_relocalizer.hpp"
+#include "reflector_matcher/map_grid.hpp"
+#include "reflector_matcher/map_triangle_index.hpp"
+#include "reflector_matcher/occluder_grid.hpp"
+
+#include "common/reflector_map.hpp"
+#include "common/se2.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace refloc {
+
+/// What the matcher's relocalization from scratch gives on the visible reflectors.
+enum class Relocalization : signed char {
+  kNotTried,   ///< fewer visible than min_matches, or the check is off
+  kUnique,     ///< OK at the true pose
+  kAmbiguous,  ///< AMBIGUOUS: a rival pose elsewhere explains them nearly as well
+  kWrong,      ///< OK at another pose: the layout there is a copy of this one
+  kLost,       ///< enough reflectors, but no hypothesis explains them (e.g. too close together)
+};
+
+const char* to_string(Relocalization r);
+
+struct PosePrediction {
+  int visible = 0;           ///< reflectors the laser sees [-]
+  bool has_bound = false;    ///< the beams determine the pose
+  double sigma_xy = 0.0;     ///< CRLB position sigma, sqrt(var x + var y) [m]
+  double sigma_theta = 0.0;  ///< CRLB heading sigma [rad]
+  Relocalization relocalization = Relocalization::kNotTried;
+  Pose2 map_T_robot_rival;  ///< the pose confused with this one (kAmbiguous, kWrong)
+};
+
+class PosePredictor {
+ public:
+  /// Copies map; builds the matcher's grid, occluder grid and triangle index once.
+  PosePredictor(ReflectorMap map, const PlanConfig& config);
+  PosePredictor(const PosePredictor&) = delete;
+  PosePredictor& operator=(const PosePredictor&) = delete;
+
+  PosePrediction predict(const Pose2& map_T_robot);
+
+  /// Map indices of the reflectors visible in the last predict() [-].
+  const std::vector<int>& visible() const { return visible_; }
+  const ReflectorMap& map() const { return map_; }
+
+ private:
+  /// Beams of the scan whose axis meets the reflector seen at range, bearing [m, rad].
+  void add_beams(int map_index, double range, double bearing);
+
+  ReflectorMap map_;
+  PlanConfig config_;
+  MapGrid grid_;
+  OccluderGrid occluders_;
+  std::unique_ptr<MapTriangleIndex> index_;
+  std::unique_ptr<GlobalRelocalizer> relocalizer_;
+  std::vector<int> scratch_;
+  std::vector<PredictedReflector> predicted_;
+  std::vector<int> visible_;
+  std::vector<ReflectorBeam> beams_;
+  std::vector<ReflectorDetection> detections_;
+  MatchResult match_;
+};
+
+}  // namespace refloc
