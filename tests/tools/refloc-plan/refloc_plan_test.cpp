@@ -1,0 +1,212 @@
+// refloc-plan: visibility (occluders, the extractor's minimum beams), the beam CRLB, the
+// matcher's rival rule on a symmetric layout (and where the rival is), the grid, the summary,
+// the greedy suggestions, the report, and the binary's exit codes and output on the demo hall.
+
+#include "layout_plan.hpp"
+#include "placement_suggestions.hpp"
+#include "plan_grid.hpp"
+#include "plan_report.hpp"
+#include "pose_prediction.hpp"
+#include "tests/tools/run_command.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace refloc {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::string kTool = std::string(REFLOC_BINARY_DIR) + "/bin/refloc-plan";
+const std::string kConfigDir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/";
+
+ReflectorMap map_of(const std::vector<Eigen::Vector2d>& points) {
+  ReflectorMap map;
+  for (size_t i = 0; i < points.size(); ++i) {
+    MapReflector r;
+    r.id = static_cast<int>(i) + 1;
+    r.map_p_center = points[i];
+    map.reflectors.push_back(r);
+  }
+  return map;
+}
+
+/// A 6 m x 4 m room whose six reflectors repeat under a 180 deg turn about (3, 2).
+ReflectorMap symmetric_room() {
+  ReflectorMap map = map_of({{0.5, 0.1}, {2.0, 0.1}, {5.9, 1.2}, {5.5, 3.9}, {4.0, 3.9}, {0.1, 2.8}});
+  map.occluders.push_back({"room", {{0, 0}, {6, 0}, {6, 4}, {0, 4}}, true});
+  return map;
+}
+
+PlanConfig laser_at_centre() {
+  PlanConfig c;
+  c.robot_T_laser = Pose2{0.0, 0.0, 0.0};
+  return c;
+}
+
+TEST(PosePredictor, CountsReflectorsInClearSightAndNotBehindAWall) {
+  ReflectorMap map = map_of({{2, 0}, {0, 2}, {-2, 0}, {0, -2}});
+  PosePredictor open(map, laser_at_centre());
+  EXPECT_EQ(open.predict(Pose2{0, 0, 0}).visible, 3);         // (-2, 0) is in the 90 deg blind sector behind
+  EXPECT_EQ(open.predict(Pose2{0, 0, M_PI / 4}).visible, 4);  // all four within 135 deg either side
+  map.occluders.push_back({"wall", {{1, -1}, {1, 1}}, false});
+  PosePredictor walled(map, laser_at_centre());
+  EXPECT_EQ(walled.predict(Pose2{0, 0, M_PI / 4}).visible, 3);
+}
+
+TEST(PosePredictor, AReflectorSpanningFewerBeamsThanTheExtractorNeedsIsNotSeen) {
+  // A 120 mm cylinder spans 0.12 / (r * 0.5 deg) beams: ~2.3 at 6 m, ~1.4 at 10 m.
+  const ReflectorMap map = map_of({{6, 0}, {0, 6}, {10, 10}});
+  PosePredictor predictor(map, laser_at_centre());
+  const PosePrediction p = predictor.predict(Pose2{0, 0, M_PI / 4});
+  EXPECT_EQ(p.visible, 2);
+  EXPECT_THAT(predictor.visible(), ::testing::UnorderedElementsAre(0, 1));
+}
+
+TEST(PosePredictor, TheBoundScalesWithTheRangeNoiseAndIsMillimetres) {
+  const ReflectorMap map = map_of({{3, 0}, {0, 3}, {2.5, 2.0}, {-1.0, 2.5}});
+  PlanConfig config = laser_at_centre();
+  PosePredictor at_12mm(map, config);
+  const PosePrediction a = at_12mm.predict(Pose2{0, 0, M_PI / 4});
+  config.range_sigma = 0.024;
+  PosePredictor at_24mm(map, config);
+  const PosePrediction b = at_24mm.predict(Pose2{0, 0, M_PI / 4});
+  ASSERT_TRUE(a.has_bound && b.has_bound);
+  EXPECT_GT(a.sigma_xy, 0.001);
+  EXPECT_LT(a.sigma_xy, 0.010);
+  EXPECT_NEAR(b.sigma_xy / a.sigma_xy, 2.0, 1e-6);  // Fisher information ~ 1 / sigma^2
+  EXPECT_NEAR(b.sigma_theta / a.sigma_theta, 2.0, 1e-6);
+  EXPECT_EQ(a.relocalization, Relocalization::kUnique);
+}
+
+TEST(PosePredictor, ASymmetricRoomIsAmbiguousAndTheRivalIsTheTurnedPose) {
+  PlanConfig config;  // the deployed mount: 0.30 m ahead of the robot's centre
+  PosePredictor predictor(symmetric_room(), config);
+  const Pose2 here{1.5, 1.2, 0.3};
+  const PosePrediction p = predictor.predict(here);
+  ASSERT_GE(p.visible, 3);
+  ASSERT_TRUE(p.relocalization == Relocalization::kAmbiguous || p.relocalization == Relocalization::kWrong);
+  // (x, y, theta) and (6 - x, 4 - y, theta + pi) see the same reflectors.
+  EXPECT_NEAR(p.map_T_robot_rival.x, 6.0 - here.x, 0.02);
+  EXPECT_NEAR(p.map_T_robot_rival.y, 4.0 - here.y, 0.02);
+  EXPECT_NEAR(std::cos(p.map_T_robot_rival.theta - here.theta), -1.0, 1e-3);
+}
+
+TEST(PlanGrid, CellsFillTheDrivableAreaAndLeaveOutRacks) {
+  ReflectorMap map = map_of({{0, 0}, {10, 0}, {0, 10}});
+  map.occluders.push_back({"hall", {{0, 0}, {10, 0}, {10, 10}, {0, 10}}, true});
+  map.occluders.push_back({"rack", {{2, 2}, {3, 2}, {3, 3}, {2, 3}}, true});
+  const PlanGrid from_map = make_plan_grid(map, {}, 1.0);
+  EXPECT_EQ(from_map.map_p_cells.size(), 99u);  // 10 x 10 minus the rack's cell
+  const PlanGrid driven = make_plan_grid(map, {sim::DrivableArea{1, 1, 4, 2}}, 0.5);
+  EXPECT_EQ(driven.map_p_cells.size(), 12u);  // 6 x 2 cells
+  EXPECT_THROW(make_plan_grid(map, {}, 0.0), std::invalid_argument);
+  EXPECT_THROW(make_plan_grid(map, {}, 0.001, 1000), std::invalid_argument);
+}
+
+TEST(LayoutPlan, ABareCornerIsBlindAndTheSummaryCountsIt) {
+  // Reflectors only near the east end, the robot facing east: the cells far west see too few
+  // (a 120 mm cylinder spans fewer than 2 beams beyond ~7 m).
+  ReflectorMap map = map_of({{12.9, 0.5}, {12.9, 2.0}, {12.9, 3.5}, {12.0, 3.9}});
+  PlanConfig config;
+  config.resolution = 1.0;
+  config.headings = 1;
+  const LayoutPlan plan =
+      plan_layout(map, make_plan_grid(map, {sim::DrivableArea{0.5, 0.5, 12.5, 3.5}}, 1.0), config);
+  ASSERT_EQ(plan.cells.size(), 36u);
+  EXPECT_STREQ(cell_class(plan.cells.front(), 3), "blind");  // (1, 1)
+  EXPECT_STRNE(cell_class(plan.cells.back(), 3), "blind");   // (12, 3)
+  EXPECT_DOUBLE_EQ(plan.summary.blind, 9.0 / 36.0);  // x = 1 .. 3 m, 9.3 m and more from the reflectors
+  EXPECT_GE(plan.summary.bad, plan.summary.blind);
+  EXPECT_DOUBLE_EQ(plan.summary.area_m2, 36.0);
+}
+
+TEST(PlacementSuggestions, CandidatesLieInsideTheHallOffTheWall) {
+  const ReflectorMap map = symmetric_room();
+  SuggestionConfig config;
+  config.spacing = 1.0;
+  const auto candidates = candidate_positions(map, make_plan_grid(map, {}, 0.5), config);
+  // 6 + 4 + 6 + 4 along the outline, inside only, less the two onto (0.5, 0.1) and (5.5, 3.9)
+  EXPECT_EQ(candidates.size(), 18u);
+  for (const auto& p : candidates) {
+    EXPECT_TRUE(p.x() > 0.0 && p.x() < 6.0 && p.y() > 0.0 && p.y() < 4.0) << p.transpose();
+  }
+}
+
+TEST(PlacementSuggestions, TwoReflectorsBreakTheSymmetricRoom) {
+  const ReflectorMap map = symmetric_room();
+  PlanConfig plan_config;
+  SuggestionConfig config;
+  config.count = 2;
+  config.spacing = 1.5;
+  config.resolution = 1.0;
+  config.headings = 2;
+  const std::vector<sim::DrivableArea> drivable{{1.0, 1.0, 5.0, 3.0}};
+  const auto suggestions = suggest_reflectors(map, drivable, plan_config, config);
+  ASSERT_EQ(suggestions.size(), 2u);
+  EXPECT_DOUBLE_EQ(suggestions[0].bad_poses_before, 1.0);
+  EXPECT_LT(suggestions[1].bad_poses_after, suggestions[0].bad_poses_after);
+  EXPECT_LT(suggestions[1].bad_poses_after, 0.5);
+  EXPECT_EQ(suggestions[0].reflector.id, 7);
+  EXPECT_EQ(with_suggestions(map, suggestions).reflectors.size(), 8u);
+}
+
+TEST(PlanReport, GridJsonHoldsEveryCellWithItsClassAndRival) {
+  PlanReport report;
+  report.map = symmetric_room();
+  report.map_name = "room";
+  report.config.resolution = 1.0;
+  report.config.headings = 2;
+  report.plan = plan_layout(report.map, make_plan_grid(report.map, {}, 1.0), report.config);
+  const auto j = nlohmann::json::parse(plan_json_text(report));
+  ASSERT_EQ(j["cells"].size(), report.plan.cells.size());
+  EXPECT_EQ(j["reflectors"].size(), 6u);
+  EXPECT_EQ(j["occluders"][0]["points"].size(), 4u);
+  int ambiguous = 0;
+  for (const auto& c : j["cells"]) {
+    if (c["class"] == "ambiguous") {
+      ++ambiguous;
+      EXPECT_TRUE(c["rival"].is_object());
+    }
+  }
+  EXPECT_GT(ambiguous, 0);
+  EXPECT_THAT(plan_summary_text(report), HasSubstr("ambiguous (relocalization AMBIGUOUS"));
+}
+
+TEST(RefLocPlanCli, DemoHallAtACoarseGridWritesTheGridAndSummary) {
+  const std::string out = ::testing::TempDir() + "refloc_plan_demo";
+  std::filesystem::remove_all(out);
+  const auto r = testing::run_command(kTool + " --world " + kConfigDir + "world_demo.json --resolution-m 1 " +
+                                      "--headings 2 --no-plot --no-progress --out-dir " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("blind (< 3 reflectors at some heading)"));
+  std::ifstream grid(out + "/grid.json");
+  const auto j = nlohmann::json::parse(grid);
+  EXPECT_GT(j["cells"].size(), 100u);
+  EXPECT_EQ(j["drivable_areas"].size(), 5u);
+  EXPECT_TRUE(std::filesystem::exists(out + "/summary.txt"));
+}
+
+TEST(RefLocPlanCli, BadInputGivesOneLineAndAnExitCode) {
+  const auto missing = testing::run_command(kTool + " --map /nonexistent/map.json --no-plot");
+  EXPECT_EQ(missing.exit_code, 64) << missing.output;
+  EXPECT_THAT(missing.output, HasSubstr("/nonexistent/map.json"));
+  const auto none = testing::run_command(kTool + " --no-plot");
+  EXPECT_EQ(none.exit_code, 64) << none.output;
+  EXPECT_THAT(none.output, HasSubstr("give --map, --world or both"));
+  const auto number =
+      testing::run_command(kTool + " --world " + kConfigDir + "world_demo.json --resolution-m abc");
+  EXPECT_EQ(number.exit_code, 64) << number.output;
+  const std::string bad = ::testing::TempDir() + "refloc_plan_bad_map.json";
+  std::ofstream(bad) << "{\"reflectors\": [{\"id\": 1, \"x\": 0}]}";
+  const auto broken = testing::run_command(kTool + " --map " + bad + " --no-plot --no-progress");
+  EXPECT_EQ(broken.exit_code, 2) << broken.output;
+  EXPECT_THAT(broken.output, HasSubstr(bad));
+}
+
+}  // namespace
+}  // namespace refloc
