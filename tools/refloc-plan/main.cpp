@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
   refloc::add_version_flag(app, "refloc-plan");
   refloc::PlanOptions o;
   // Shipped files from the refloc root, so refloc-plan runs from any working directory.
-  for (std::string* file : {&o.robot_file, &o.matcher_file}) *file = refloc::shipped_path(*file);
+  for (std::string* file : {&o.robot_file, &o.matcher_file, &o.extractor_file, &o.solver_file})
+    *file = refloc::shipped_path(*file);
   refloc::add_plan_options(app, o);
   try {
     app.parse(argc, argv);

@@ -1,6 +1,7 @@
 #include "plan_command.hpp"
 
 #include "layout_plan.hpp"
+#include "measured_outcome.hpp"
 #include "placement_suggestions.hpp"
 #include "plan_input.hpp"
 #include "plan_progress.hpp"
@@ -34,6 +35,36 @@ PlanConfig plan_config(const PlanOptions& o) {
   return c;
 }
 
+PlanProgress progress_of(PlanProgressBar& bar, bool show) {
+  return show ? PlanProgress([&bar](size_t d, size_t t) { bar.update(d, t); }) : PlanProgress();
+}
+
+/// Rendered scans at sampled cells, before and (with suggestions) after; writes measure*.csv.
+void measure(const PlanOptions& o, const PlanInput& input, bool terminal, PlanReport& report) {
+  if (!input.has_world) throw ConfigError("--measure-cells needs --world (the scans are rendered from it)");
+  const PipelineConfigs pipeline =
+      load_pipeline_configs(PipelineMode::kDefault, o.extractor_file, o.matcher_file, o.solver_file);
+  MeasureConfig config;
+  config.cells = o.measure_cells;
+  config.scans = o.measure_scans;
+  config.seed = o.seed;
+  const int m = report.config.matcher.min_matches;
+  const auto run = [&](const sim::World& world, const ReflectorMap& map, const LayoutPlan& plan,
+                       const std::string& csv) {
+    PlanProgressBar bar(stderr, "measuring", terminal);
+    const auto poses =
+        measure_plan(world, map, plan, report.config, pipeline, config, progress_of(bar, o.progress));
+    write_text_file(o.out_dir + "/" + csv, measurements_csv(poses, m));
+    return measure_summary_text(summarize_measurements(poses, m), config);
+  };
+  report.measured = run(input.world, input.map, report.plan, "measure.csv");
+  if (report.suggestions.empty()) return;
+  sim::World world = input.world;
+  for (const Suggestion& s : report.suggestions) world.reflectors.reflectors.push_back(s.reflector);
+  report.measured_after =
+      run(world, with_suggestions(input.map, report.suggestions), report.plan_after, "measure_after.csv");
+}
+
 }  // namespace
 
 int run_plan(const PlanOptions& o) {
@@ -46,11 +77,9 @@ int run_plan(const PlanOptions& o) {
   report.drivable = input.drivable;
   const bool terminal = o.progress && isatty(fileno(stderr));
   PlanProgressBar bar(stderr, "planning", terminal);
-  const PlanProgress progress =
-      o.progress ? PlanProgress([&](size_t d, size_t t) { bar.update(d, t); }) : PlanProgress();
   const PlanGrid grid = make_plan_grid(input.map, input.drivable, report.config.resolution);
   const auto start = std::chrono::steady_clock::now();
-  report.plan = plan_layout(input.map, grid, report.config, progress);
+  report.plan = plan_layout(input.map, grid, report.config, progress_of(bar, o.progress));
   report.runtime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (o.suggest > 0) {
     SuggestionConfig s;
@@ -59,19 +88,17 @@ int run_plan(const PlanOptions& o) {
     s.resolution = o.suggest_resolution_m;
     s.headings = o.suggest_headings;
     PlanProgressBar suggest_bar(stderr, "suggesting", terminal);
-    report.suggestions = suggest_reflectors(
-        input.map, input.drivable, report.config, s,
-        o.progress ? PlanProgress([&](size_t d, size_t t) { suggest_bar.update(d, t); }) : PlanProgress());
+    report.suggestions =
+        suggest_reflectors(input.map, input.drivable, report.config, s, progress_of(suggest_bar, o.progress));
     if (!report.suggestions.empty()) {
       const ReflectorMap after = with_suggestions(input.map, report.suggestions);
       PlanProgressBar after_bar(stderr, "after", terminal);
-      report.plan_after = plan_layout(
-          after, grid, report.config,
-          o.progress ? PlanProgress([&](size_t d, size_t t) { after_bar.update(d, t); }) : PlanProgress());
+      report.plan_after = plan_layout(after, grid, report.config, progress_of(after_bar, o.progress));
     } else {
       fmt::print(stderr, "refloc-plan: no candidate position reduces the bad area (or there is none)\n");
     }
   }
+  if (o.measure_cells > 0) measure(o, input, terminal, report);
   write_plan_report(report, o.out_dir);
   fmt::print("{}", plan_summary_text(report));
   fmt::print("wrote {0}/grid.json, {0}/summary.txt\n", o.out_dir);

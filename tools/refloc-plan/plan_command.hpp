@@ -1,6 +1,7 @@
 #pragma once
 // refloc-plan's run: read the inputs, plan the grid, suggest, write the report and draw it.
 
+#include <cstdint>
 #include <string>
 
 namespace refloc {
@@ -12,6 +13,8 @@ struct PlanOptions {
   std::string occluders = "auto";
   std::string robot_file = "deploy/config/robot.json";
   std::string matcher_file = "deploy/config/reflector_matcher.json";
+  std::string extractor_file = "deploy/config/reflector_extractor.json";  ///< --measure-cells only
+  std::string solver_file = "deploy/config/pose_solver.json";             ///< --measure-cells only
   double resolution_m = 0.25;
   int headings = 8;
   double crlb_limit_mm = 10.0;
@@ -23,6 +26,9 @@ struct PlanOptions {
   double suggest_spacing_m = 1.0;
   double suggest_resolution_m = 0.5;
   int suggest_headings = 4;
+  int measure_cells = 0;
+  int measure_scans = 5;
+  uint64_t seed = 1;
   std::string out_dir = "logs/refloc-plan";
   bool plot = true;
   bool progress = true;

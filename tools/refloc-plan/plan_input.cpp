@@ -17,6 +17,7 @@ PlanInput load_plan_input(const std::string& map_file, const std::string& world_
   sim::World world;
   if (!world_file.empty()) {
     world = sim::load_world(world_file);
+    input.has_world = true;
     input.drivable = world.drivable_areas;
   }
   input.map_name = map_file.empty() ? world.map_file : map_file;
@@ -25,6 +26,7 @@ PlanInput load_plan_input(const std::string& map_file, const std::string& world_
   const bool use_world = occluders == "world" || (occluders == "auto" && input.map.occluders.empty());
   if (occluders == "none") input.map.occluders.clear();
   if (use_world && !world_file.empty()) input.map.occluders = sim::world_occluders(world);
+  input.world = std::move(world);
   return input;
 }
 

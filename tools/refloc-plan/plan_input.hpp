@@ -14,6 +14,8 @@ struct PlanInput {
   ReflectorMap map;                         ///< reflectors and the occluders planned with
   std::vector<sim::DrivableArea> drivable;  ///< the world's; empty for a map alone
   std::string map_name;                     ///< the map file as given, for titles
+  bool has_world = false;
+  sim::World world;  ///< the world file's (for rendered scans), when given
 };
 
 /// map_file and/or world_file ("" = none; at least one). The map is map_file, else the world's

@@ -57,6 +57,20 @@ inline void add_plan_options(CLI::App& c, PlanOptions& o) {
   c.add_option("--suggest-headings", o.suggest_headings, "headings the suggestions are chosen at [-]")
       ->capture_default_str()
       ->check(CLI::Range(1, 360));
+  c.add_option("--measure-cells", o.measure_cells,
+               "check the prediction: render scans at this many random cells (every heading) through "
+               "refloc-eval's pipeline; needs --world; 0 = off [-]")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000000));
+  c.add_option("--measure-scans", o.measure_scans, "rendered scans per measured pose [-]")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  c.add_option("--seed", o.seed, "random seed of the measured cells and the sensor noise")
+      ->capture_default_str();
+  c.add_option("--extractor-config", o.extractor_file, "reflector_extractor config of the measurement")
+      ->capture_default_str();
+  c.add_option("--solver-config", o.solver_file, "pose_solver config of the measurement")
+      ->capture_default_str();
   c.add_option("--out-dir", o.out_dir, "folder for grid.json, summary.txt, plan.png, plan.svg")
       ->capture_default_str();
   c.add_flag("--plot,!--no-plot", o.plot,

@@ -93,6 +93,8 @@ std::string plan_summary_text(const PlanReport& r) {
     }
     text += "after adding them:\n" + summary_lines(r.plan_after.summary, c);
   }
+  text += r.measured;
+  if (!r.measured_after.empty()) text += "with the suggestions: " + r.measured_after;
   return text;
 }
 
@@ -136,16 +138,18 @@ std::string plan_json_text(const PlanReport& r) {
   return j.dump(1);
 }
 
-void write_plan_report(const PlanReport& report, const std::string& out_dir) {
+void write_text_file(const std::string& path, const std::string& text) {
   std::error_code error;
-  std::filesystem::create_directories(out_dir, error);
-  const auto write = [](const std::string& path, const std::string& text) {
-    std::ofstream out(path);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + path);
-  };
-  write(out_dir + "/grid.json", plan_json_text(report));
-  write(out_dir + "/summary.txt", plan_summary_text(report));
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (!folder.empty()) std::filesystem::create_directories(folder, error);
+  std::ofstream out(path);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+void write_plan_report(const PlanReport& report, const std::string& out_dir) {
+  write_text_file(out_dir + "/grid.json", plan_json_text(report));
+  write_text_file(out_dir + "/summary.txt", plan_summary_text(report));
 }
 
 }  // namespace refloc

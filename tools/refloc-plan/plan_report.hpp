@@ -17,8 +17,10 @@ struct PlanReport {
   PlanConfig config;
   LayoutPlan plan;
   std::vector<Suggestion> suggestions;
-  LayoutPlan plan_after;   ///< with the suggestions (cells empty when there are none)
-  double runtime_s = 0.0;  ///< of plan (not of the suggestions) [s]
+  LayoutPlan plan_after;       ///< with the suggestions (cells empty when there are none)
+  double runtime_s = 0.0;      ///< of plan (not of the suggestions) [s]
+  std::string measured;        ///< measure_summary_text of the plan ("" when not measured)
+  std::string measured_after;  ///< same with the suggestions added to map and world
 };
 
 /// The summary's lines: area fractions, median bound, and the suggestions' before/after.
@@ -29,6 +31,9 @@ std::string plan_json_text(const PlanReport& report);
 
 /// Writes out_dir/grid.json and out_dir/summary.txt (the folder is created). Throws
 /// std::runtime_error naming the file that cannot be written.
+/// Writes text to path (its folder created); std::runtime_error naming the path on failure.
+void write_text_file(const std::string& path, const std::string& text);
+
 void write_plan_report(const PlanReport& report, const std::string& out_dir);
 
 }  // namespace refloc

@@ -3,11 +3,14 @@
 // the greedy suggestions, the report, and the binary's exit codes and output on the demo hall.
 
 #include "layout_plan.hpp"
+#include "measured_outcome.hpp"
 #include "placement_suggestions.hpp"
 #include "plan_grid.hpp"
 #include "plan_report.hpp"
 #include "pose_prediction.hpp"
 #include "tests/tools/run_command.hpp"
+#include "world_renderer/world_loader.hpp"
+#include "world_renderer/world_occluders.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -175,6 +178,51 @@ TEST(PlanReport, GridJsonHoldsEveryCellWithItsClassAndRival) {
   }
   EXPECT_GT(ambiguous, 0);
   EXPECT_THAT(plan_summary_text(report), HasSubstr("ambiguous (relocalization AMBIGUOUS"));
+}
+
+TEST(MeasuredOutcome, RenderedScansInTheSymmetricWorldAreAmbiguousAsPredicted) {
+  const sim::World world = sim::load_world(kConfigDir + "world_symmetric.json");
+  ReflectorMap map = load_reflector_map(world.map_file);
+  map.occluders = sim::world_occluders(world);
+  PlanConfig config;
+  config.headings = 1;
+  const LayoutPlan plan = plan_layout(map, make_plan_grid(map, world.drivable_areas, 2.0), config);
+  MeasureConfig measure;
+  measure.cells = 3;
+  measure.scans = 2;
+  const auto poses =
+      measure_plan(world, map, plan, config, load_deployed_pipeline_configs(kConfigDir), measure);
+  ASSERT_EQ(poses.size(), 3u);
+  for (const PoseMeasurement& m : poses) {
+    EXPECT_EQ(predicted_outcome(m.predicted, 3), PoseOutcome::kAmbiguous);
+    EXPECT_EQ(m.measured, PoseOutcome::kAmbiguous) << m.map_T_robot.x << ", " << m.map_T_robot.y;
+  }
+  const MeasureSummary s = summarize_measurements(poses, 3);
+  EXPECT_DOUBLE_EQ(s.pose_agreement, 1.0);
+  EXPECT_EQ(s.confusion[2][2], 3);
+}
+
+TEST(MeasuredOutcome, TheSummaryCountsAgreementAndTheRmseOverCrlbRatio) {
+  std::vector<PoseMeasurement> poses(4);
+  for (size_t i = 0; i < poses.size(); ++i) {
+    poses[i].cell = i / 2;  // two cells, two headings each
+    poses[i].predicted.visible = 5;
+    poses[i].predicted.relocalization = Relocalization::kUnique;
+    poses[i].predicted.has_bound = true;
+    poses[i].predicted.sigma_xy = 0.004;
+    poses[i].fixes_here = 5;
+    poses[i].rmse_xy = 0.004 * (1.0 + static_cast<double>(i));  // ratios 1, 2, 3, 4
+    poses[i].measured = PoseOutcome::kOk;
+  }
+  poses[3].measured = PoseOutcome::kBlind;
+  const MeasureSummary s = summarize_measurements(poses, 3);
+  EXPECT_EQ(s.cells, 2u);
+  EXPECT_DOUBLE_EQ(s.pose_agreement, 0.75);
+  EXPECT_DOUBLE_EQ(s.cell_agreement, 0.5);
+  EXPECT_EQ(s.confusion[0][1], 1);
+  EXPECT_EQ(s.ratio_count, 4u);
+  EXPECT_DOUBLE_EQ(s.ratio_median, 2.0);  // the lower middle of 4
+  EXPECT_NEAR(s.ratio_pooled, std::sqrt((1.0 + 4.0 + 9.0 + 16.0) / 4.0), 1e-12);
 }
 
 TEST(RefLocPlanCli, DemoHallAtACoarseGridWritesTheGridAndSummary) {
