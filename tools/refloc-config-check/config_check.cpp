@@ -8,6 +8,7 @@
 #include "navigator/navigator_config_file.hpp"
 #include "pose_fusion/fusion_config_file.hpp"
 #include "pose_solver/solver_config_file.hpp"
+#include "quick_layout_check.hpp"
 #include "reflector_extractor/extractor_config_file.hpp"
 #include "reflector_matcher/matcher_config_file.hpp"
 #include "robot_sim/sim_setup.hpp"
@@ -91,8 +92,12 @@ std::pair<std::string, std::string> split_config_argument(const std::string& arg
 
 FileCheck check_map_file(const std::string& path) {
   const ReflectorMap map = load_reflector_map(path);
+  std::vector<std::string> warnings = map.warnings;
+  // refloc-plan's quick version: a layout that localizes nowhere or is ambiguous somewhere.
+  const QuickLayoutCheck layout = quick_layout_check(map, path);
+  if (!layout.warning.empty()) warnings.push_back(layout.warning);
   if (map.info.format == 1) {
-    return FileCheck{fmt::format("ok, {} reflectors, format 1", map.reflectors.size()), map.warnings};
+    return FileCheck{fmt::format("ok, {} reflectors, format 1", map.reflectors.size()), warnings};
   }
   const long with_covariance =
       std::count_if(map.reflectors.begin(), map.reflectors.end(),
@@ -103,7 +108,7 @@ FileCheck check_map_file(const std::string& path) {
                   map.reflectors.size(), with_covariance,
                   static_cast<long>(map.reflectors.size()) - with_covariance, map.occluders.size(),
                   map.info.map_id, map.info.version, map.info.source, map.info.created),
-      map.warnings};
+      warnings};
 }
 
 FileCheck check_config_file(const std::string& service, const std::string& path) {

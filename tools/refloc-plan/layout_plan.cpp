@@ -41,6 +41,7 @@ LayoutPlan plan_layout(const ReflectorMap& map, const PlanGrid& grid, const Plan
         cell.sigma_theta_max = std::max(cell.sigma_theta_max, p.sigma_theta);
       }
       if (p.relocalization == Relocalization::kLost) ++cell.headings_lost;
+      if (p.relocalization == Relocalization::kUnique) ++cell.headings_unique;
       cell.headings_bad +=
           p.visible < config.matcher.min_matches || p.relocalization == Relocalization::kLost ||
           p.relocalization == Relocalization::kAmbiguous || p.relocalization == Relocalization::kWrong ||

@@ -18,6 +18,7 @@ struct CellPlan {
   double visible_mean = 0.0;                        ///< over headings [-]
   int headings_ambiguous = 0;                       ///< AMBIGUOUS or OK at a wrong pose [-]
   int headings_lost = 0;                            ///< >= min_matches visible, no fix [-]
+  int headings_unique = 0;                          ///< relocalized OK at the true pose [-]
   int headings_bad = 0;          ///< blind, ambiguous, lost, no bound or above the CRLB limit [-]
   bool has_bound = false;        ///< every heading's beams determine the pose
   double sigma_xy_max = 0.0;     ///< worst heading's CRLB position sigma [m]

@@ -63,6 +63,17 @@ TEST(ConfigCheckTool, PrintsTheFormatTwoHeaderAndCounts) {
   EXPECT_THAT(r.output, HasSubstr(v1 + ": ok, 24 reflectors, format 1"));
 }
 
+TEST(ConfigCheckTool, TheSymmetricMapWarnsThatItLocalizesNowhereTheDemoMapDoesNot) {
+  const std::string symmetric = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/map_symmetric.json";
+  const std::string demo = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/map_demo_v2.json";
+  const auto r = testing::run_command(kTool + " --map " + symmetric + " --map " + demo);
+  EXPECT_EQ(r.exit_code, 0) << r.output;  // a warning, not an invalid file
+  EXPECT_THAT(r.output, HasSubstr("warning: " + symmetric + ": the layout localizes nowhere: blind "));
+  EXPECT_THAT(r.output, ::testing::Not(HasSubstr("warning: " + demo)));
+  const auto strict = testing::run_command(kTool + " --strict --map " + symmetric);
+  EXPECT_EQ(strict.exit_code, 2) << strict.output;
+}
+
 TEST(ConfigCheckTool, NoMapIsAUsageError) {
   const auto r = testing::run_command(kTool);
   EXPECT_EQ(r.exit_code, 64) << "usage error (exit 2 is reserved for invalid files): " << r.output;

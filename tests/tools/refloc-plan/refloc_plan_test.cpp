@@ -8,6 +8,7 @@
 #include "plan_grid.hpp"
 #include "plan_report.hpp"
 #include "pose_prediction.hpp"
+#include "quick_layout_check.hpp"
 #include "tests/tools/run_command.hpp"
 #include "world_renderer/world_loader.hpp"
 #include "world_renderer/world_occluders.hpp"
@@ -223,6 +224,19 @@ TEST(MeasuredOutcome, TheSummaryCountsAgreementAndTheRmseOverCrlbRatio) {
   EXPECT_EQ(s.ratio_count, 4u);
   EXPECT_DOUBLE_EQ(s.ratio_median, 2.0);  // the lower middle of 4
   EXPECT_NEAR(s.ratio_pooled, std::sqrt((1.0 + 4.0 + 9.0 + 16.0) / 4.0), 1e-12);
+}
+
+TEST(QuickLayoutCheck, TheSymmetricRoomLocalizesNowhereAndHalfBrokenSymmetryIsAmbiguousInPart) {
+  const QuickLayoutCheck symmetric = quick_layout_check(symmetric_room(), "room.json");
+  EXPECT_THAT(symmetric.warning, HasSubstr("room.json: the layout localizes nowhere: blind "));
+  EXPECT_LE(symmetric.summary.cells, 400u);
+  ReflectorMap broken = symmetric_room();
+  broken.reflectors[0].map_p_center = {1.3, 0.1};  // one pair no longer a turned copy; two still are
+  broken.reflectors[3].map_p_center = {4.6, 3.9};
+  const QuickLayoutCheck part = quick_layout_check(broken, "room.json");
+  EXPECT_THAT(part.warning, HasSubstr("room.json: the layout is ambiguous over part of its area"));
+  EXPECT_GT(part.summary.ambiguous, 0.1);
+  EXPECT_LT(part.summary.ambiguous, 0.9);
 }
 
 TEST(RefLocPlanCli, DemoHallAtACoarseGridWritesTheGridAndSummary) {
