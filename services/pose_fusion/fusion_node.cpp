@@ -272,8 +272,18 @@ std::optional<FusionOutput> FusionNode::on_fix(const LaserFixInput& input, int64
     published(FusionStatus::kDegraded, now_mono_us);
   }
   if (config_.measurements == FusionMeasurements::kDetections && !fusion_.needs_initialisation()) {
-    event("fixes_left_to_detections");  // the scan's detections correct the estimate themselves
-    return out;
+    const bool matches_flowing =
+        last_matches_mono_us_ >= 0 && now_mono_us - last_matches_mono_us_ <= kMatchesSilentUs;
+    if (matches_flowing) {
+      event("fixes_left_to_detections");  // the scan's detections correct the estimate themselves
+      return out;
+    }
+    if (!fixes_in_place_of_matches_) {
+      fixes_in_place_of_matches_ = true;
+      event(nullptr, NodeEvent::Level::kWarn,
+            "no REFLECTOR_MATCHES for 0.2 s: LASER_POSE fixes correct the estimate until matches come again");
+    }
+    event("fixes_used_without_matches");
   }
   const FixResult result = fusion_.add_fix(*fix);
   count_fix_result(result);
@@ -302,6 +312,11 @@ void FusionNode::on_matches(const MatchesInput& input, int64_t now_mono_us, int6
     return;
   }
   match_checks_.accepted(host_utime);
+  last_matches_mono_us_ = now_mono_us;
+  if (fixes_in_place_of_matches_) {
+    fixes_in_place_of_matches_ = false;
+    event(nullptr, NodeEvent::Level::kInfo, "REFLECTOR_MATCHES again: detections correct the estimate");
+  }
   for (int64_t missing = match_checks_.missing_before(input.scan_counter, input.utime, events_); missing > 0;
        --missing)
     event(match_checks_.gap_counter());

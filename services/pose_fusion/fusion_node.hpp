@@ -67,6 +67,11 @@ class FusionNode {
  public:
   /// No POSE published this long: DEGRADED [us].
   static constexpr int64_t kSilentOutputUs = 1'000'000;
+  /// With measurements "detections": no REFLECTOR_MATCHES received this long (ten scans at
+  /// 50 Hz; matcher restarting, a solver fed from elsewhere): LASER_POSE fixes correct the
+  /// estimate instead, until matches come again [us]. Never both for one scan: fixes start
+  /// only after this silence, and stop at the first matches message.
+  static constexpr int64_t kMatchesSilentUs = 200'000;
 
   /// noise: the robot's odometry increment noise (robot.json).
   FusionNode(const FusionServiceConfig& config, const OdometryNoise& noise);
@@ -119,6 +124,8 @@ class FusionNode {
   StreamGapCounter fix_gaps_;
   InputStreamChecks match_checks_{"matches", chain_stream_stamp_limits()};
   DetectionScan scan_;
+  int64_t last_matches_mono_us_ = -1;       ///< last REFLECTOR_MATCHES that passed the input checks
+  bool fixes_in_place_of_matches_ = false;  ///< for the log: LASER_POSE is correcting
   double nis_mean_ = 0.0;  ///< moving mean over ~50 scans of accepted detections' Mahalanobis^2
   int32_t reflectors_used_ = 0;
   FusionStatus published_status_ = FusionStatus::kInitializing;  ///< of the filter, for the log

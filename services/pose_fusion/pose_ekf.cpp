@@ -42,20 +42,27 @@ void ekf_predict(FusionState& state, const Pose2& measured_delta, const Eigen::M
   const Eigen::Vector3d d(measured_delta.x, measured_delta.y, measured_delta.theta);
   const Eigen::Vector3d corrected = d + state.odometry_error * d;
   const Pose2 delta{corrected.x(), corrected.y(), corrected.z()};
-  StateCovariance f = StateCovariance::Identity();
-  f.topLeftCorner<3, 3>() = compose_jacobian_lhs(state.map_T_robot, delta);
+  // F is the identity but for its first three rows: P' = F P F^T touches only the pose rows
+  // and columns (a quarter of the dense product's work).
+  Eigen::Matrix<double, 3, kStateDim> f_top = Eigen::Matrix<double, 3, kStateDim>::Zero();
+  f_top.leftCols<3>() = compose_jacobian_lhs(state.map_T_robot, delta);
   const Eigen::Matrix3d g = compose_jacobian_rhs(state.map_T_robot);
   // d(E d)/dE for E row-major: row r of E multiplies d.
-  for (int r = 0; r < 3; ++r) f.block<3, 3>(0, StateIndex::kOdometryError + 3 * r) = g.col(r) * d.transpose();
+  for (int r = 0; r < 3; ++r)
+    f_top.block<3, 3>(0, StateIndex::kOdometryError + 3 * r) = g.col(r) * d.transpose();
   state.map_T_robot = state.map_T_robot * delta;
-  StateCovariance p = f * state.covariance * f.transpose();
+  StateCovariance& p = state.covariance;
+  const Eigen::Matrix<double, 3, kStateDim> fp = f_top * p;  // rows 0-2 of F P
+  const Eigen::Matrix3d fpf = fp * f_top.transpose();        // block (0-2, 0-2) of F P F^T
+  p.topRows<3>() = fp;
+  p.leftCols<3>() = fp.transpose();
+  p.topLeftCorner<3, 3>() = fpf;
   p.topLeftCorner<3, 3>() += g * q * g.transpose();
   p(StateIndex::kRangeBias, StateIndex::kRangeBias) +=
       walk.range_bias_m_per_sqrt_s * walk.range_bias_m_per_sqrt_s * std::max(dt_s, 0.0);
   const double motion = std::hypot(d.x(), d.y()) + std::abs(d.z());
   const double e_var = walk.odometry_error_per_sqrt_m * walk.odometry_error_per_sqrt_m * motion;
   for (int i = 0; i < 9; ++i) p(StateIndex::kOdometryError + i, StateIndex::kOdometryError + i) += e_var;
-  state.covariance = p;
 }
 
 double pose_mahalanobis_squared(const FusionState& state, const Pose2& z, const Eigen::Matrix3d& r) {

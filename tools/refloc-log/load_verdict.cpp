@@ -1,11 +1,14 @@
 #include "load_verdict.hpp"
 
+#include "common/json_config.hpp"
 #include "log_report.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 
 namespace refloc {
 namespace {
@@ -182,6 +185,23 @@ std::string format_load_test_report(const LoadSamples& samples, const ScanContin
       checks.no_restart, checks.max_p99_ms);
   out += checks.pass() ? "PASS\n" : "FAIL\n";
   return out;
+}
+
+int report_load_test(const ScanContinuityReport& scans, const LatencyReport& latency,
+                     const std::string& samples_path, const std::string& report_path, bool json) {
+  const LoadSamples samples = load_load_samples(samples_path);
+  const LoadChecks checks = judge_load_test(samples, scans, latency);
+  const auto doc = load_test_report_to_json(samples, scans, latency, checks);
+  if (!report_path.empty()) {
+    std::ofstream out(report_path);
+    if (!(out << doc.dump(2) << "\n")) throw ConfigError(report_path + ": cannot write");
+  }
+  if (json) {
+    std::printf("%s\n", doc.dump(2).c_str());
+  } else {
+    std::printf("%s", format_load_test_report(samples, scans, latency, checks).c_str());
+  }
+  return checks.pass() ? 0 : 1;
 }
 
 }  // namespace refloc

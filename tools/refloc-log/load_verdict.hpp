@@ -40,4 +40,10 @@ nlohmann::ordered_json load_test_report_to_json(const LoadSamples& samples, cons
 std::string format_load_test_report(const LoadSamples& samples, const ScanContinuityReport& scans,
                                     const LatencyReport& latency, const LoadChecks& checks);
 
+/// refloc-log --load-test: judge the log's scans and latency with the run's /proc samples (read
+/// from samples_path), write the JSON report to report_path (unless empty), print the report (JSON
+/// when json); 0 pass, 1 fail.
+int report_load_test(const ScanContinuityReport& scans, const LatencyReport& latency,
+                     const std::string& samples_path, const std::string& report_path, bool json);
+
 }  // namespace refloc

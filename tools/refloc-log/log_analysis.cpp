@@ -40,6 +40,7 @@ LogAnalysis analyze_log(const std::string& path, const LogAnalysisOptions& optio
                         const MessageDecoder& decoder) {
   LogStatistics statistics(options.gap_threshold_s, options.max_gaps);
   PipelineLatency latency(options.pipeline_channels);
+  latency.set_next_channel(options.next_channel);
   ScanContinuity continuity(options.scan_channel, options.scan_stages, options.scan_tail_grace_s);
   laser_scan_t scan;
   for_each_log_event(path, [&](const LogEventView& e) {
@@ -54,6 +55,7 @@ LogAnalysis analyze_log(const std::string& path, const LogAnalysisOptions& optio
     }
     if (options.scans) add_to_continuity(continuity, e, heartbeat, decoder, scan);
     if (!options.latency) return;
+    if (!options.next_channel.empty() && *e.channel == options.next_channel) latency.add_next(e.log_utime);
     if (const int stage = latency.stage_of(*e.channel); stage >= 0) {
       if (const auto scan_utime = decoder.utime(e.data, e.size)) {
         latency.add(static_cast<size_t>(stage), *scan_utime, e.log_utime);

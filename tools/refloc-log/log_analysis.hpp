@@ -19,6 +19,8 @@ struct LogAnalysisOptions {
   size_t max_gaps = 100;         ///< list at most this many gaps
   bool latency = false;          ///< also measure the scan-to-pose pipeline
   std::vector<std::string> pipeline_channels = default_pipeline_channels();
+  /// --then-next: a channel without the scan's utime ending the pipeline (PipelineLatency).
+  std::string next_channel;
   std::string heartbeat_channel = "HEARTBEAT";
   bool scans = false;  ///< also check scan continuity (dropped scans) and service health
   std::string scan_channel = "LMS100_SCAN";

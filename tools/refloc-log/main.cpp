@@ -12,28 +12,8 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <fstream>
 
 namespace {
-
-/// --load-test: the verdict over the log and the run's samples; exit 0 pass, 1 fail.
-int report_load_test(const refloc::LogAnalysis& analysis, const std::string& samples_path,
-                     const std::string& report_path, bool json) {
-  const refloc::LoadSamples samples = refloc::load_load_samples(samples_path);
-  const refloc::LoadChecks checks = refloc::judge_load_test(samples, *analysis.scans, *analysis.latency);
-  const auto doc = refloc::load_test_report_to_json(samples, *analysis.scans, *analysis.latency, checks);
-  if (!report_path.empty()) {
-    std::ofstream out(report_path);
-    if (!(out << doc.dump(2) << "\n")) throw refloc::ConfigError(report_path + ": cannot write");
-  }
-  if (json) {
-    std::printf("%s\n", doc.dump(2).c_str());
-  } else {
-    std::printf("%s",
-                refloc::format_load_test_report(samples, *analysis.scans, *analysis.latency, checks).c_str());
-  }
-  return checks.pass() ? 0 : 1;
-}
 
 struct CommandLine {
   std::string log_path;
@@ -64,6 +44,10 @@ void add_options(CLI::App& app, CommandLine& c) {
                  "pipeline channels for --latency, comma separated")
       ->delimiter(',')
       ->capture_default_str();
+  app.add_option("--then-next", c.options.next_channel,
+                 "with --latency: end each scan at the first message on this channel logged after its last "
+                 "pipeline stage (POSE: the fused pose that includes it; pair with --pipeline "
+                 "LMS100_SCAN,REFLECTORS,REFLECTOR_MATCHES)");
   app.add_flag(
       "--scans", c.options.scans,
       "dropped scans: LMS100_SCAN counter gaps, scans reaching REFLECTORS/REFLECTOR_MATCHES/LASER_POSE, "
@@ -79,7 +63,9 @@ int run(CommandLine c) {
   if (!c.load_samples.empty()) c.options.latency = c.options.scans = true;
   const refloc::MessageDecoder decoder;
   const auto analysis = refloc::analyze_log(c.log_path, c.options, decoder);
-  if (!c.load_samples.empty()) return report_load_test(analysis, c.load_samples, c.load_report, c.json);
+  if (!c.load_samples.empty())
+    return refloc::report_load_test(*analysis.scans, *analysis.latency, c.load_samples, c.load_report,
+                                    c.json);
   const auto exported = refloc::export_log(c.log_path, analysis.summary, c.request, decoder);
   std::printf("%s", refloc::format_log_analysis(analysis, c.json).c_str());
   std::fprintf(stderr, "%s", refloc::format_export_counts(c.request, exported).c_str());

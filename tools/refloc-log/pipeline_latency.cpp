@@ -46,11 +46,22 @@ void PipelineLatency::add_processing(const ServiceProcessing& processing) {
 LatencyReport PipelineLatency::report() const {
   LatencyReport r;
   r.channels = channels_;
-  const size_t n = channels_.size();
+  auto by_scan = log_utime_by_scan_;
+  if (!next_channel_.empty()) {
+    r.channels.push_back(next_channel_ + " (next)");
+    std::vector<int64_t> next = next_log_utimes_;
+    std::sort(next.begin(), next.end());
+    for (auto& [scan_utime, times] : by_scan) {
+      const auto it =
+          times.back() < 0 ? next.end() : std::lower_bound(next.begin(), next.end(), times.back());
+      times.push_back(it == next.end() ? -1 : *it);
+    }
+  }
+  const size_t n = r.channels.size();
   r.reached.assign(n, 0);
   std::vector<std::vector<double>> stage_us(n > 0 ? n - 1 : 0);
   std::vector<double> total_us;
-  for (const auto& [scan_utime, times] : log_utime_by_scan_) {
+  for (const auto& [scan_utime, times] : by_scan) {
     for (size_t i = 0; i < n; ++i) r.reached[i] += times[i] >= 0 ? 1 : 0;
     for (size_t i = 0; i + 1 < n; ++i) {
       if (times[i] >= 0 && times[i + 1] >= 0)

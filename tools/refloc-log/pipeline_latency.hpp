@@ -52,6 +52,13 @@ class PipelineLatency {
   /// A message of stage `stage` about scan `scan_utime` was logged at log_utime [us].
   /// Only the first one per scan and stage counts (a replayed duplicate does not).
   void add(size_t stage, int64_t scan_utime, int64_t log_utime);
+  /// A channel that carries no scan utime but is the pipeline's real end (POSE: one per
+  /// odometry message, published after the scan's REFLECTOR_MATCHES reached pose_fusion): its
+  /// first message logged at or after a scan's last stage ends that scan, as "<channel> (next)".
+  void set_next_channel(std::string channel) { next_channel_ = std::move(channel); }
+  const std::string& next_channel() const { return next_channel_; }
+  /// A message of the next channel logged at log_utime [us] (in log order).
+  void add_next(int64_t log_utime) { next_log_utimes_.push_back(log_utime); }
   /// Remember a service's handler time percentiles (HEARTBEAT); the last one wins.
   void add_processing(const ServiceProcessing& processing);
 
@@ -61,6 +68,8 @@ class PipelineLatency {
   std::vector<std::string> channels_;
   std::map<int64_t, std::vector<int64_t>> log_utime_by_scan_;  ///< -1 = not seen on that stage
   std::map<std::string, ServiceProcessing> processing_;
+  std::string next_channel_;
+  std::vector<int64_t> next_log_utimes_;
 };
 
 }  // namespace refloc

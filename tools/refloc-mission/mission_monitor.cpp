@@ -150,7 +150,9 @@ nlohmann::json MissionMonitor::report(const std::string& log_file) const {
   j["pose_rmse_mm"] = pose_stats.rmse_xy_m * 1000.0;
   j["pose_max_error_mm"] = pose_stats.max_xy_m * 1000.0;
   j["pose_samples"] = pose_stats.count;
+  j["pose_heading_rmse_mrad"] = pose_stats.rmse_heading_rad * 1000.0;
   j["laser_pose_rmse_mm"] = laser_stats.rmse_xy_m * 1000.0;
+  j["laser_pose_heading_rmse_mrad"] = laser_stats.rmse_heading_rad * 1000.0;
   j["laser_pose_samples"] = laser_stats.count;
   j["pose_nees"] = consistency_json(consistency_against_truth(pose_fixes_, truth_, drive_start_utime_));
   j["laser_pose_nees"] =

@@ -40,10 +40,14 @@ std::string format_mission_summary(const nlohmann::json& report) {
   out += fmt::format("max true waypoint error: {:.1f} mm, {:.2f} deg\n",
                      report["max_waypoint_error_mm"].get<double>(),
                      report["max_waypoint_heading_error_deg"].get<double>());
-  out += fmt::format("POSE RMSE vs GROUND_TRUTH: {:.1f} mm over {} samples\n",
-                     report["pose_rmse_mm"].get<double>(), report["pose_samples"].get<size_t>());
-  out += fmt::format("LASER_POSE RMSE vs GROUND_TRUTH: {:.1f} mm over {} fixes\n",
-                     report["laser_pose_rmse_mm"].get<double>(), report["laser_pose_samples"].get<size_t>());
+  out += fmt::format(
+      "POSE RMSE vs GROUND_TRUTH: {:.1f} mm (max {:.1f} mm), heading {:.2f} mrad, over {} samples\n",
+      report["pose_rmse_mm"].get<double>(), report["pose_max_error_mm"].get<double>(),
+      report.value("pose_heading_rmse_mrad", 0.0), report["pose_samples"].get<size_t>());
+  out += fmt::format("LASER_POSE RMSE vs GROUND_TRUTH: {:.1f} mm, heading {:.2f} mrad, over {} fixes\n",
+                     report["laser_pose_rmse_mm"].get<double>(),
+                     report.value("laser_pose_heading_rmse_mrad", 0.0),
+                     report["laser_pose_samples"].get<size_t>());
   out += format_nees("POSE", report["pose_nees"]);
   out += format_nees("LASER_POSE", report["laser_pose_nees"]);
   if (!report["range_bias_mm"].is_null() && !report["range_bias_sigma_mm"].is_null())

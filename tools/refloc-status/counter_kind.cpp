@@ -8,7 +8,7 @@ namespace {
 
 // Counters of normal operation and gauges (values, not counts), by the services that send
 // them. Listed, not guessed from the name: "lost_scans" and "scans" differ by one word.
-constexpr std::array<std::string_view, 24> kNormalCounters = {
+constexpr std::array<std::string_view, 31> kNormalCounters = {
     // lms100_driver: link and stamping
     "connects", "scans", "scans_in_bursts", "held_scans", "held_scan_max_delay_us",
     // lms100_emulator and robot_sim's emulated sensor
@@ -21,8 +21,11 @@ constexpr std::array<std::string_view, 24> kNormalCounters = {
     "global_relocalizations", "startup_scans_without_prior",
     // pose_solver: the range bias gauges, and fixes where b was held (said in the OK detail)
     "range_bias_um", "range_bias_sigma_um", "range_bias_unestimable_fixes",
-    // pose_fusion
-    "fixes_accepted", "initialisations", "fixes_deferred"};
+    // pose_fusion: the fixes and scans it used, and its gauges (range bias, shared name with the
+    // solver's; odometry calibration; mean squared Mahalanobis distance of accepted detections)
+    "fixes_accepted", "initialisations", "fixes_deferred", "scans_accepted", "fixes_left_to_detections",
+    "detection_nis_milli", "odometry_error_xx_ppm", "odometry_error_yy_ppm", "odometry_error_turn_ppm",
+    "odometry_error_turn_per_x_ppm"};
 
 }  // namespace
 

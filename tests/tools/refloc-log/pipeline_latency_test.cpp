@@ -80,6 +80,25 @@ TEST(PipelineLatency, EndToEndPercentilesOverScansThatReachedThePose) {
   EXPECT_EQ(r.reached, (std::vector<size_t>{100, 100, 100, 99}));
 }
 
+TEST(PipelineLatency, TheNextChannelEndsEachScanAtItsFirstMessageAfterTheLastStage) {
+  PipelineLatency p({"LMS100_SCAN", "REFLECTOR_MATCHES"});
+  p.set_next_channel("POSE");
+  for (int64_t i = 0; i < 10; ++i) {
+    p.add(0, 1000 * i, 1000 * i + 100);
+    p.add(1, 1000 * i, 1000 * i + 300);
+    p.add_next(1000 * i + 800);  // one POSE per odometry message, 0.5 ms after the matches
+  }
+  p.add(0, 20'000, 20'100);  // the last scan: matches after the last POSE
+  p.add(1, 20'000, 20'300);
+  const LatencyReport r = p.report();
+  ASSERT_EQ(r.channels.back(), "POSE (next)");
+  ASSERT_EQ(r.stages.size(), 2u);
+  EXPECT_DOUBLE_EQ(r.stages[1].p50_ms, 0.5);
+  EXPECT_EQ(r.end_to_end.count, 10u);
+  EXPECT_DOUBLE_EQ(r.end_to_end.p50_ms, 0.7);
+  EXPECT_EQ(r.reached, (std::vector<size_t>{11, 11, 10}));
+}
+
 TEST(PipelineLatency, HeartbeatProcessingTimesAreReported) {
   const auto r = measure(write_pipeline_log());
   ASSERT_EQ(r.processing.size(), 1u);
