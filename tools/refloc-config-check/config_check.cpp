@@ -93,9 +93,12 @@ std::pair<std::string, std::string> split_config_argument(const std::string& arg
 FileCheck check_map_file(const std::string& path) {
   const ReflectorMap map = load_reflector_map(path);
   std::vector<std::string> warnings = map.warnings;
-  // refloc-plan's quick version: a layout that localizes nowhere or is ambiguous somewhere.
-  const QuickLayoutCheck layout = quick_layout_check(map, path);
-  if (!layout.warning.empty()) warnings.push_back(layout.warning);
+  // refloc-plan's quick version: a layout that localizes nowhere or is ambiguous somewhere
+  // (not repeated for a colinear map, whose warning already says the pose is not observable).
+  if (warnings.empty()) {
+    const QuickLayoutCheck layout = quick_layout_check(map, path);
+    if (!layout.warning.empty()) warnings.push_back(layout.warning);
+  }
   if (map.info.format == 1) {
     return FileCheck{fmt::format("ok, {} reflectors, format 1", map.reflectors.size()), warnings};
   }

@@ -19,7 +19,7 @@ struct PlanOptions {
   int headings = 8;
   double crlb_limit_mm = 10.0;
   double range_sigma_mm = 12.0;
-  int min_beams = 2;
+  double min_beams = 2.0;
   int spot_samples = 51;
   bool ambiguity = true;
   int suggest = 0;

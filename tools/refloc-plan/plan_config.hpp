@@ -25,7 +25,7 @@ struct PlanConfig {
   double crlb_limit = 0.010;
   /// A reflector counts as visible with at least this many beam axes on its cylinder (the
   /// deployed extractor's min_beams, deploy/config/reflector_extractor.json) [-].
-  int min_beams = 2;
+  double min_beams = 2.0;
   Pose2 robot_T_laser{0.30, 0.0, 0.0};  ///< laser mount (robot.json's laser_mount) [m, m, rad]
   PlanScanGeometry scan;
   double range_sigma = 0.012;  ///< LMS100 statistical range noise, 1 sigma [m]

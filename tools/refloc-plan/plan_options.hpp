@@ -34,10 +34,12 @@ inline void add_plan_options(CLI::App& c, PlanOptions& o) {
   c.add_option("--range-sigma-mm", o.range_sigma_mm, "LMS100 range noise per beam, 1 sigma [mm]")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 1000.0));
-  c.add_option("--min-beams", o.min_beams,
-               "beams on a cylinder for it to count as seen (reflector_extractor.json's min_beams) [-]")
+  c.add_option(
+       "--min-beams", o.min_beams,
+       "beams across a cylinder, on average, for it to count as seen: 2 = 6.9 m for 120 mm at 0.5 deg "
+       "(reflector_extractor.json's min_beams) [-]")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100));
+      ->check(CLI::Range(1.0, 100.0));
   c.add_option("--spot-samples", o.spot_samples,
                "rays across the beam spot in the CRLB (refloc-eval: 201) [-]")
       ->capture_default_str()

@@ -60,13 +60,14 @@ PosePrediction PosePredictor::predict(const Pose2& map_T_robot) {
     if (!p.in_view || is_shadowed(map_, predicted_, k)) continue;
     const MapReflector& reflector = map_.reflectors[static_cast<size_t>(p.map_index)];
     if (line_of_sight(occluders_, map_T_laser.translation(), reflector) != LineOfSight::kClear) continue;
-    const size_t beams_before = beams_.size();
-    add_beams(p.map_index, p.range, p.bearing);
-    // Fewer beams than the extractor needs: no detection, and no beams in the bound either.
-    if (static_cast<int>(beams_.size() - beams_before) < config_.min_beams) {
-      beams_.resize(beams_before);
+    // Fewer beams than the extractor needs, on average over where the beams fall: no detection,
+    // and no beams in the bound either. (Counting the beams of this very pose instead credits a
+    // far reflector that two beams happen to straddle; the extractor rarely finds those.)
+    if (p.range <= reflector.radius ||
+        2.0 * std::asin(reflector.radius / p.range) / config_.scan.angle_increment < config_.min_beams) {
       continue;
     }
+    add_beams(p.map_index, p.range, p.bearing);
     visible_.push_back(p.map_index);
     ReflectorDetection d;
     d.laser_p_center = p.laser_p;

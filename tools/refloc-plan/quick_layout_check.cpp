@@ -36,7 +36,7 @@ QuickLayoutCheck quick_layout_check(const ReflectorMap& map, const std::string& 
                                     [](const CellPlan& c) { return c.headings_unique > 0; });
   if (plan.cells.empty() || nowhere) {
     check.warning = fmt::format("{}: the layout localizes nowhere: {}", source, figures);
-  } else if (s.ambiguous > 0.0) {
+  } else if (s.ambiguous >= kAmbiguousAreaWarning) {
     check.warning = fmt::format(
         "{}: the layout is ambiguous over part of its area (the matcher may take one place for "
         "another): {}",

@@ -124,7 +124,8 @@ TEST(LayoutPlan, ABareCornerIsBlindAndTheSummaryCountsIt) {
   ASSERT_EQ(plan.cells.size(), 36u);
   EXPECT_STREQ(cell_class(plan.cells.front(), 3), "blind");  // (1, 1)
   EXPECT_STRNE(cell_class(plan.cells.back(), 3), "blind");   // (12, 3)
-  EXPECT_DOUBLE_EQ(plan.summary.blind, 9.0 / 36.0);  // x = 1 .. 3 m, 9.3 m and more from the reflectors
+  // x = 1 .. 5 m: farther than 6.9 m (2 beams of 0.5 deg on 120 mm) from all but one reflector
+  EXPECT_DOUBLE_EQ(plan.summary.blind, 15.0 / 36.0);
   EXPECT_GE(plan.summary.bad, plan.summary.blind);
   EXPECT_DOUBLE_EQ(plan.summary.area_m2, 36.0);
 }
