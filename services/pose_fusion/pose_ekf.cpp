@@ -1,6 +1,7 @@
 #include "pose_fusion/pose_ekf.hpp"
 
 #include "common/covariance_propagation.hpp"
+#include "common/laser_point_model.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -12,8 +13,6 @@ namespace refloc {
 namespace {
 
 using StateVector = Eigen::Matrix<double, kStateDim, 1>;
-
-Eigen::Matrix2d rotation(double theta) { return Pose2{0.0, 0.0, theta}.rotation(); }
 
 void add_to_state(FusionState& state, const StateVector& dx) {
   Pose2& p = state.map_T_robot;
@@ -83,20 +82,16 @@ void ekf_correct_pose(FusionState& state, const Pose2& z, const Eigen::Matrix3d&
 
 DetectionInnovation detection_innovation(const FusionState& state, const MatchedDetection& detection,
                                          const Pose2& robot_T_laser, double map_variance) {
-  const Pose2 map_T_laser = state.map_T_robot * robot_T_laser;
-  const Eigen::Matrix2d laser_R_map = rotation(map_T_laser.theta).transpose();
-  const Eigen::Vector2d predicted_no_bias =
-      laser_R_map * (detection.map_point - Eigen::Vector2d(map_T_laser.x, map_T_laser.y));
+  Eigen::Vector2d residual_no_bias;
+  Eigen::Matrix<double, 2, 3> d_residual_d_pose;
+  laser_point_residual_and_jacobian(detection.map_point, detection.laser_point, state.map_T_robot,
+                                    robot_T_laser, residual_no_bias, d_residual_d_pose);
   const double measured_range = detection.laser_point.norm();
   const Eigen::Vector2d u = measured_range > 0.0 ? Eigen::Vector2d(detection.laser_point / measured_range)
                                                  : Eigen::Vector2d::Zero();
   DetectionInnovation out;
-  out.y = detection.laser_point - (predicted_no_bias + state.range_bias_m * u);
-  const Eigen::Matrix2d skew = (Eigen::Matrix2d() << 0.0, -1.0, 1.0, 0.0).finished();
-  out.h.leftCols<2>() = -laser_R_map;
-  // d/dtheta of R(theta_L)^T (m - t_L), with t_L = t + R(theta) l and theta_L = theta + mount theta.
-  out.h.col(2) = -skew * predicted_no_bias -
-                 rotation(-robot_T_laser.theta) * skew * Eigen::Vector2d(robot_T_laser.x, robot_T_laser.y);
+  out.y = residual_no_bias - state.range_bias_m * u;
+  out.h.leftCols<3>() = -d_residual_d_pose;
   out.h.col(StateIndex::kRangeBias) = u;
   out.r = detection.covariance + map_variance * Eigen::Matrix2d::Identity();
   out.s = out.h * state.covariance * out.h.transpose() + out.r;
