@@ -38,6 +38,8 @@ install(DIRECTORY deploy/systemd/ DESTINATION deploy/systemd)
 # run_mission.sh runs the stack in a private network namespace through this script.
 install(PROGRAMS tests/tools/run_in_netns.sh DESTINATION deploy)
 install(DIRECTORY docs/ DESTINATION docs)
+# web_console serves its page from <root>/services/web_console/www (shipped_path).
+install(DIRECTORY services/web_console/www/ DESTINATION services/web_console/www)
 # run_mission.sh and refloc-eval draw their pictures with it (<root>/tools/refloc-plot).
 install(PROGRAMS tools/refloc-plot/refloc-plot.py tools/refloc-plot/residual_correlation.py
         DESTINATION tools/refloc-plot)

@@ -13,6 +13,7 @@ packages=(
   python3-matplotlib
   clang-format git
   libceres-dev
+  libboost-dev
 )
 
 # Every refloc program's LCM URL asks for this UDP receive buffer (recv_buf_size, common/lcm_url.hpp:

@@ -9,7 +9,7 @@ set -euo pipefail
 bin="$1"
 
 services=(lms100_driver reflector_extractor reflector_matcher pose_solver mecanum_odometry pose_fusion
-          navigator robot_sim lms100_emulator)
+          navigator robot_sim lms100_emulator web_console)
 declare -A role=(
   [lms100_driver]="SICK LMS1xx/5xx/TiM link: CoLa-A or CoLa-B over TCP -> LMS100_SCAN"
   [reflector_extractor]="LMS100_SCAN -> REFLECTORS (reflector centres with covariance)"
@@ -19,6 +19,7 @@ declare -A role=(
   [pose_fusion]="ODOMETRY + LASER_POSE -> POSE (the fused pose)"
   [navigator]="NAV_GOAL + POSE -> CMD_VEL, NAV_STATUS"
   [robot_sim]="simulation only: the robot, its wheels and an emulated LMS100 in a world file"
+  [web_console]="the live console in the browser: map, scan, poses, health over HTTP/WebSocket; goals and stop as NAV_GOAL when control is enabled"
   [lms100_emulator]="simulation only: a stand-alone emulated LMS100 (TCP) for a static pose or test pattern"
 )
 

@@ -22,7 +22,8 @@ trap cleanup EXIT
 
 cmake --install "$build" --prefix "$prefix" >"$tmp/install.log" || fail "cmake --install: $(tail -5 "$tmp/install.log")"
 for f in deploy/refloc deploy/services.list deploy/supervisord.conf deploy/config/robot.json \
-         deploy/config/map_demo.json deploy/systemd/refloc@.service bin/pose_solver bin/refloc-status; do
+         deploy/config/map_demo.json deploy/systemd/refloc@.service bin/pose_solver bin/refloc-status \
+         bin/web_console services/web_console/www/index.html; do
   [ -e "$prefix/$f" ] || fail "the install has no $f"
 done
 ! ls "$prefix/bin" | grep -Eq '_test|_tests$|_integration|_bench|^bench_' ||

@@ -22,7 +22,7 @@ if [ -n "$undocumented" ]; then
 fi
 
 for s in lms100_driver reflector_extractor reflector_matcher pose_solver mecanum_odometry pose_fusion navigator \
-         robot_sim lms100_emulator; do
+         robot_sim lms100_emulator web_console; do
   shipped="$root/deploy/config/$s.json"
   args=(--config "$shipped")
   [ -f "$shipped" ] || args=(--config "")

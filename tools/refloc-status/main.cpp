@@ -37,9 +37,9 @@ double monotonic_s() { return static_cast<double>(monotonic_us()) * 1e-6; }
 
 struct Options {
   std::string lcm_url;
-  std::vector<std::string> expected{
-      "lms100_driver",    "reflector_extractor", "reflector_matcher", "pose_solver",
-      "mecanum_odometry", "pose_fusion",         "navigator",         "robot_sim"};
+  std::vector<std::string> expected{"lms100_driver", "reflector_extractor", "reflector_matcher",
+                                    "pose_solver",   "mecanum_odometry",    "pose_fusion",
+                                    "navigator",     "robot_sim",           "web_console"};
   bool once = false;
   double wait_s = 3.0;
   double max_age_s = 3.0;

@@ -1,0 +1,59 @@
+#pragma once
+// Turns what the console subscribes to into JSON frames for the page (docs: the README's
+// "Frames"). Runs on the LCM thread; never blocks. Scans and poses are decimated by their own
+// stamps; trails are kept here and handed to clients that connect later as snapshots.
+
+#include "common/reflector_map.hpp"
+#include "web_console/console_config.hpp"
+#include "web_console/console_frame.hpp"
+#include "web_console/console_inputs.hpp"
+#include "web_console/pose_trail.hpp"
+#include "web_console/rate_decimator.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace refloc {
+
+/// The pose channels the console draws.
+enum class PoseSource { kPose, kLaserPose, kGroundTruth };
+const char* pose_source_name(PoseSource source);  ///< "POSE", "LASER_POSE", "GROUND_TRUTH"
+
+class ConsoleModel {
+ public:
+  ConsoleModel(const ConsoleModelConfig& config, ReflectorMap map, bool control_enabled);
+
+  /// The map frame: reflectors with ids and radii, occluders, the map's id and version.
+  ConsoleFrame map_frame() const;
+  /// What the page needs to know about the console itself (control enabled, rates).
+  ConsoleFrame console_frame() const;
+
+  std::optional<ConsoleFrame> on_scan(const ConsoleScan& scan);  ///< nullopt: decimated away
+  ConsoleFrame on_detections(const ConsoleDetections& detections);
+  ConsoleFrame on_matches(const ConsoleMatches& matches);
+  std::optional<ConsoleFrame> on_pose(PoseSource source, const ConsolePose& pose);
+  ConsoleFrame on_goal(const ConsoleGoal& goal);
+  ConsoleFrame on_nav_status(const ConsoleNavStatus& status);
+  ConsoleFrame on_heartbeat(const ConsoleHeartbeat& heartbeat);
+  ConsoleFrame on_map_health(const ConsoleMapHealth& health);
+  /// One snapshot frame per trail, kept for clients that connect later (not sent now).
+  std::vector<ConsoleFrame> trail_frames() const;
+
+  const ReflectorMap& map() const { return map_; }
+  size_t trail_size(PoseSource source) const { return trails_[static_cast<int>(source)].size(); }
+  int64_t scans_skipped() const { return scans_skipped_; }
+
+ private:
+  ConsoleModelConfig config_;
+  ReflectorMap map_;
+  bool control_enabled_;
+  RateDecimator scan_rate_;
+  std::vector<RateDecimator> pose_rates_;
+  std::vector<PoseTrail> trails_;
+  /// The latest OK matches' map_T_laser: where the page draws scans and detections.
+  std::optional<std::array<double, 3>> map_T_laser_;
+  int64_t scans_skipped_ = 0;
+};
+
+}  // namespace refloc

@@ -1,0 +1,118 @@
+// ConsoleModel: what the page is sent for each message, decimation, trails.
+
+#include "web_console/console_model.hpp"
+
+#include "common/reflector_map.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace refloc {
+namespace {
+
+nlohmann::json parsed(const ConsoleFrame& frame) { return nlohmann::json::parse(*frame.text); }
+
+ConsoleModel demo_model(ConsoleModelConfig config = {}) {
+  return ConsoleModel(
+      config, load_reflector_map(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/map_demo.json"), false);
+}
+
+TEST(ConsoleModel, TheMapFrameHoldsEveryReflectorWithItsIdAndIsKeptForLaterClients) {
+  ConsoleModel model = demo_model();
+  const ConsoleFrame frame = model.map_frame();
+  const nlohmann::json j = parsed(frame);
+  EXPECT_EQ(frame.latest_key, "map");
+  EXPECT_EQ(j["type"], "map");
+  ASSERT_EQ(j["reflectors"].size(), model.map().reflectors.size());
+  EXPECT_GE(j["reflectors"].size(), 3u);
+  EXPECT_EQ(j["reflectors"][0]["id"], model.map().reflectors[0].id);
+  EXPECT_DOUBLE_EQ(j["reflectors"][0]["x"].get<double>(), model.map().reflectors[0].map_p_center.x());
+  EXPECT_EQ(j["occluders"].size(), model.map().occluders.size());
+}
+
+TEST(ConsoleModel, ScansAt50HzReachThePageAt10HzByTheirOwnStamps) {
+  ConsoleModel model = demo_model();
+  ConsoleScan scan;
+  scan.ranges = {1.2345f, 0.0f};
+  scan.rssi = {200, 10};
+  scan.rssi_bits = 8;
+  int sent = 0;
+  for (int i = 0; i < 50; ++i) {
+    scan.utime = 1'000'000 + i * 20'000 + (i % 2 ? 300 : -300);  // +-0.3 ms jitter
+    if (const auto frame = model.on_scan(scan)) {
+      ++sent;
+      const nlohmann::json j = parsed(*frame);
+      EXPECT_EQ(j["ranges_mm"][0], 1235);
+      EXPECT_EQ(j["rssi"][0], 200);
+    }
+  }
+  EXPECT_EQ(sent, 10);
+  EXPECT_EQ(model.scans_skipped(), 40);
+}
+
+TEST(ConsoleModel, ScansAreDrawnFromTheLatestOkMatchesHypothesis) {
+  ConsoleModel model = demo_model();
+  ConsoleMatches matches;
+  matches.status = "OK";
+  matches.map_T_laser = {1.0, 2.0, 0.5};
+  matches.matches.push_back({7, 3.0, 4.0, 1.5, 0.2});
+  const nlohmann::json m = parsed(model.on_matches(matches));
+  EXPECT_EQ(m["matches"][0]["map_id"], 7);
+  ConsoleScan scan;
+  scan.utime = 5;
+  const nlohmann::json s = parsed(*model.on_scan(scan));
+  EXPECT_DOUBLE_EQ(s["map_T_laser"][1].get<double>(), 2.0);
+  matches.status = "LOST";
+  matches.map_T_laser = {9.0, 9.0, 0.0};
+  model.on_matches(matches);
+  const nlohmann::json d = parsed(model.on_detections({}));
+  EXPECT_DOUBLE_EQ(d["map_T_laser"][0].get<double>(), 1.0) << "a LOST hypothesis is not drawn on";
+}
+
+TEST(ConsoleModel, PosesAreDecimatedButEveryPoseFeedsItsBoundedTrail) {
+  ConsoleModelConfig config;
+  config.trail_points = 5;
+  config.trail_step_m = 0.01;
+  config.pose_rate_hz = 10.0;
+  ConsoleModel model = demo_model(config);
+  int sent = 0;
+  for (int i = 0; i < 100; ++i) {  // 100 Hz for 1 s, 2 cm a step
+    ConsolePose pose;
+    pose.utime = i * 10'000;
+    pose.x = 0.02 * i;
+    pose.covariance[0] = 1e-6;
+    pose.status = "OK";
+    if (const auto frame = model.on_pose(PoseSource::kPose, pose)) {
+      ++sent;
+      EXPECT_EQ(frame->latest_key, "pose/POSE");
+      EXPECT_DOUBLE_EQ(parsed(*frame)["covariance"][0].get<double>(), 1e-6);
+    }
+  }
+  EXPECT_EQ(sent, 11) << "the first, then one per 100 ms slot up to 0.99 s (a tenth early counts)";
+  EXPECT_EQ(model.trail_size(PoseSource::kPose), 5u);
+  EXPECT_EQ(model.trail_size(PoseSource::kGroundTruth), 0u);
+  const std::vector<ConsoleFrame> trails = model.trail_frames();
+  ASSERT_EQ(trails.size(), 3u);
+  EXPECT_FALSE(trails[0].send_now);
+  const nlohmann::json t = parsed(trails[0]);
+  ASSERT_EQ(t["points"].size(), 5u);
+  EXPECT_NEAR(t["points"][0][0].get<double>(), 1.90, 1e-9) << "oldest kept first";
+  EXPECT_NEAR(t["points"][4][0].get<double>(), 1.98, 1e-9);
+}
+
+TEST(ConsoleModel, EachServicesHeartbeatIsKeptUnderItsOwnName) {
+  ConsoleModel model = demo_model();
+  ConsoleHeartbeat h;
+  h.service = "pose_solver";
+  h.state = "DEGRADED";
+  h.counters = {{"lost_fixes", 3}};
+  const ConsoleFrame frame = model.on_heartbeat(h);
+  EXPECT_EQ(frame.latest_key, "heartbeat/pose_solver");
+  EXPECT_EQ(parsed(frame)["counters"]["lost_fixes"], 3);
+  ConsoleMapHealth health;
+  health.reflectors.push_back({4, "missing", 0, 60, 0.0, 0.0});
+  EXPECT_EQ(parsed(model.on_map_health(health))["reflectors"][0]["state"], "missing");
+}
+
+}  // namespace
+}  // namespace refloc
