@@ -1,1 +1,102 @@
-// placeholder
+// The console page: one WebSocket to web_console, frames kept in `state`, three views redrawn
+// on the next animation frame. No build step, no download: plain ES modules and Canvas.
+import { MapView } from './map_view.js';
+import { drawSensor } from './sensor_view.js';
+import { renderHealth } from './health_view.js';
+
+const TRAIL_POINTS = 2000;  // points kept per trail in the page
+const state = {
+  map: null, scan: null, detections: null, matches: null, goal: null, navStatus: null,
+  mapHealth: null, poses: {}, trails: { POSE: [], LASER_POSE: [], GROUND_TRUTH: [] },
+  heartbeats: new Map(), console: { control_enabled: false },
+};
+
+const mapView = new MapView(document.getElementById('map'), state, sendGoal);
+const $ = (id) => document.getElementById(id);
+let socket = null;
+let redrawPending = false;
+
+function redraw() {
+  if (redrawPending) return;
+  redrawPending = true;
+  requestAnimationFrame(() => {
+    redrawPending = false;
+    mapView.draw();
+    drawSensor($('sensor'), state);
+    renderHealth($('health').tBodies[0], $('map-health'), state);
+    renderLines();
+  });
+}
+
+function renderLines() {
+  const p = state.poses.POSE;
+  $('pose-line').textContent = p
+    ? `POSE ${p.status} x ${p.x.toFixed(3)} y ${p.y.toFixed(3)} m θ ${(p.theta * 180 / Math.PI).toFixed(2)}° ` +
+      `σxy ${(1000 * Math.sqrt(Math.max(p.covariance[0], p.covariance[4]))).toFixed(1)} mm, ${p.reflectors_used} reflectors`
+    : 'no POSE yet';
+  const n = state.navStatus;
+  $('nav-line').textContent = n
+    ? `navigator ${n.state} goal ${n.goal_id} waypoint ${n.waypoint_index + 1}/${n.waypoints}` +
+      ` ${n.distance_to_waypoint.toFixed(3)} m ${n.reason}`
+    : '';
+  const s = state.scan;
+  $('scan-line').textContent = s ? `${s.ranges_mm.length} beams, ${s.rssi_bits}-bit RSSI, page ≤ ${state.console.scan_rate_hz} Hz` : '';
+}
+
+function addTrailPoint(channel, x, y) {
+  const trail = state.trails[channel];
+  const last = trail[trail.length - 1];
+  if (last && Math.hypot(x - last[0], y - last[1]) < 0.02) return;
+  trail.push([x, y]);
+  if (trail.length > TRAIL_POINTS) trail.splice(0, trail.length - TRAIL_POINTS);
+}
+
+const handlers = {
+  console: (f) => { state.console = f; $('controls').hidden = !f.control_enabled; },
+  map: (f) => { const first = !state.map; state.map = f; if (first) mapView.fit(); },
+  scan: (f) => { state.scan = f; },
+  detections: (f) => { state.detections = f; },
+  matches: (f) => { state.matches = f; },
+  pose: (f) => { state.poses[f.channel] = f; addTrailPoint(f.channel, f.x, f.y); },
+  trail: (f) => { if (state.trails[f.channel].length === 0) state.trails[f.channel] = f.points; },
+  goal: (f) => { state.goal = f; },
+  nav_status: (f) => { state.navStatus = f; },
+  heartbeat: (f) => { state.heartbeats.set(f.service, { ...f, received_ms: performance.now() }); },
+  map_health: (f) => { state.mapHealth = f; },
+};
+
+function connect() {
+  socket = new WebSocket(`ws://${location.host}/`);
+  socket.onopen = () => { $('connection').textContent = 'live'; $('connection').className = 'ok'; };
+  socket.onclose = () => {
+    $('connection').textContent = 'disconnected, retrying…';
+    $('connection').className = 'bad';
+    setTimeout(connect, 1000);
+  };
+  socket.onmessage = (event) => {
+    const frame = JSON.parse(event.data);
+    const handle = handlers[frame.type];
+    if (handle) { handle(frame); redraw(); }
+  };
+}
+
+function sendCommand(command) {
+  if (!socket || socket.readyState !== WebSocket.OPEN) return;
+  socket.send(JSON.stringify({ ...command, token: $('token').value }));
+}
+
+function sendGoal(x, y, theta) {
+  sendCommand({ type: 'goal', x, y, theta });
+  $('goal-mode').classList.remove('armed');
+}
+
+$('goal-mode').onclick = () => {
+  mapView.goalMode = !mapView.goalMode;
+  $('goal-mode').classList.toggle('armed', mapView.goalMode);
+};
+$('stop').onclick = () => sendCommand({ type: 'stop' });
+$('fit').onclick = () => { mapView.fit(); redraw(); };
+$('ellipse-scale').onchange = (e) => { mapView.ellipseScale = Number(e.target.value); redraw(); };
+window.onresize = redraw;
+setInterval(redraw, 1000);  // heartbeat ages
+connect();
