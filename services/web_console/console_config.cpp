@@ -33,10 +33,11 @@ void parse_channels(const JsonConfig& config, ConsoleChannels& c) {
 }
 
 void parse_model(const JsonConfig& config, ConsoleModelConfig& m) {
-  m.scan_rate_hz = config.number({"/model/scan_rate_hz", "Hz",
-                                  "at most this many LMS100_SCAN frames a second to each page (the others "
-                                  "are skipped, by the scans' own stamps)"},
-                                 m.scan_rate_hz, 0.1, 100.0);
+  m.scan_rate_hz =
+      config.number({"/model/scan_rate_hz", "Hz",
+                     "at most this many scans a second to each page (LMS100_SCAN, REFLECTORS and "
+                     "REFLECTOR_MATCHES of one scan; the others are skipped, by the scans' own stamps)"},
+                    m.scan_rate_hz, 0.1, 100.0);
   m.pose_rate_hz = config.number({"/model/pose_rate_hz", "Hz",
                                   "at most this many frames a second per pose channel (POSE, LASER_POSE, "
                                   "GROUND_TRUTH); trails take every pose"},

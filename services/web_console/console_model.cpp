@@ -41,7 +41,9 @@ ConsoleModel::ConsoleModel(const ConsoleModelConfig& config, ReflectorMap map, b
     : config_(config),
       map_(std::move(map)),
       control_enabled_(control_enabled),
-      scan_rate_(config.scan_rate_hz) {
+      scan_rate_(config.scan_rate_hz),
+      detections_rate_(config.scan_rate_hz),
+      matches_rate_(config.scan_rate_hz) {
   for (int i = 0; i < 3; ++i) {
     pose_rates_.emplace_back(config.pose_rate_hz);
     trails_.emplace_back(config.trail_points, config.trail_step_m);
@@ -93,7 +95,8 @@ std::optional<ConsoleFrame> ConsoleModel::on_scan(const ConsoleScan& scan) {
                "scan");
 }
 
-ConsoleFrame ConsoleModel::on_detections(const ConsoleDetections& in) {
+std::optional<ConsoleFrame> ConsoleModel::on_detections(const ConsoleDetections& in) {
+  if (!detections_rate_.accept(in.utime)) return std::nullopt;
   json detections = json::array();
   for (const ConsoleDetection& d : in.detections)
     detections.push_back({{"x", d.x},
@@ -113,8 +116,9 @@ ConsoleFrame ConsoleModel::on_detections(const ConsoleDetections& in) {
                "detections");
 }
 
-ConsoleFrame ConsoleModel::on_matches(const ConsoleMatches& in) {
-  if (in.status == "OK") map_T_laser_ = in.map_T_laser;
+std::optional<ConsoleFrame> ConsoleModel::on_matches(const ConsoleMatches& in) {
+  if (in.status == "OK") map_T_laser_ = in.map_T_laser;  // from every scan, also those not sent
+  if (!matches_rate_.accept(in.utime)) return std::nullopt;
   json matches = json::array();
   for (const ConsoleMatch& m : in.matches)
     matches.push_back(

@@ -30,8 +30,10 @@ class ConsoleModel {
   ConsoleFrame console_frame() const;
 
   std::optional<ConsoleFrame> on_scan(const ConsoleScan& scan);  ///< nullopt: decimated away
-  ConsoleFrame on_detections(const ConsoleDetections& detections);
-  ConsoleFrame on_matches(const ConsoleMatches& matches);
+  /// Detections and matches reach the page at scan_rate_hz too, by their scan's stamp: the same
+  /// scans as on_scan lets through.
+  std::optional<ConsoleFrame> on_detections(const ConsoleDetections& detections);
+  std::optional<ConsoleFrame> on_matches(const ConsoleMatches& matches);
   std::optional<ConsoleFrame> on_pose(PoseSource source, const ConsolePose& pose);
   ConsoleFrame on_goal(const ConsoleGoal& goal);
   ConsoleFrame on_nav_status(const ConsoleNavStatus& status);
@@ -49,6 +51,8 @@ class ConsoleModel {
   ReflectorMap map_;
   bool control_enabled_;
   RateDecimator scan_rate_;
+  RateDecimator detections_rate_;
+  RateDecimator matches_rate_;
   std::vector<RateDecimator> pose_rates_;
   std::vector<PoseTrail> trails_;
   /// The latest OK matches' map_T_laser: where the page draws scans and detections.

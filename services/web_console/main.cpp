@@ -30,11 +30,10 @@ void show_all(ServiceRuntime& rt, ConsoleModel& model, ConsoleServer& server, co
   show<laser_scan_t>(rt, server, ch.scan,
                      [&](const laser_scan_t& m) { return model.on_scan(from_message(m)); });
   show<reflector_detections_t>(rt, server, ch.detections, [&](const reflector_detections_t& m) {
-    return F(model.on_detections(from_message(m)));
+    return model.on_detections(from_message(m));
   });
-  show<reflector_matches_t>(rt, server, ch.matches, [&](const reflector_matches_t& m) {
-    return F(model.on_matches(from_message(m)));
-  });
+  show<reflector_matches_t>(rt, server, ch.matches,
+                            [&](const reflector_matches_t& m) { return model.on_matches(from_message(m)); });
   const std::pair<const std::string*, PoseSource> poses[] = {{&ch.pose, PoseSource::kPose},
                                                              {&ch.laser_pose, PoseSource::kLaserPose},
                                                              {&ch.ground_truth, PoseSource::kGroundTruth}};

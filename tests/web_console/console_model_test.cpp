@@ -48,6 +48,17 @@ TEST(ConsoleModel, ScansAt50HzReachThePageAt10HzByTheirOwnStamps) {
   }
   EXPECT_EQ(sent, 10);
   EXPECT_EQ(model.scans_skipped(), 40);
+  int detections_sent = 0, matches_sent = 0;
+  for (int i = 0; i < 50; ++i) {
+    ConsoleDetections detections;
+    detections.utime = 1'000'000 + i * 20'000;
+    ConsoleMatches matches;
+    matches.utime = detections.utime;
+    detections_sent += model.on_detections(detections) ? 1 : 0;
+    matches_sent += model.on_matches(matches) ? 1 : 0;
+  }
+  EXPECT_EQ(detections_sent, 10) << "REFLECTORS at the scans' rate";
+  EXPECT_EQ(matches_sent, 10) << "REFLECTOR_MATCHES at the scans' rate";
 }
 
 TEST(ConsoleModel, ScansAreDrawnFromTheLatestOkMatchesHypothesis) {
@@ -56,7 +67,7 @@ TEST(ConsoleModel, ScansAreDrawnFromTheLatestOkMatchesHypothesis) {
   matches.status = "OK";
   matches.map_T_laser = {1.0, 2.0, 0.5};
   matches.matches.push_back({7, 3.0, 4.0, 1.5, 0.2});
-  const nlohmann::json m = parsed(model.on_matches(matches));
+  const nlohmann::json m = parsed(*model.on_matches(matches));
   EXPECT_EQ(m["matches"][0]["map_id"], 7);
   ConsoleScan scan;
   scan.utime = 5;
@@ -64,8 +75,9 @@ TEST(ConsoleModel, ScansAreDrawnFromTheLatestOkMatchesHypothesis) {
   EXPECT_DOUBLE_EQ(s["map_T_laser"][1].get<double>(), 2.0);
   matches.status = "LOST";
   matches.map_T_laser = {9.0, 9.0, 0.0};
-  model.on_matches(matches);
-  const nlohmann::json d = parsed(model.on_detections({}));
+  matches.utime = 1'000'000;
+  EXPECT_TRUE(model.on_matches(matches));
+  const nlohmann::json d = parsed(*model.on_detections({}));
   EXPECT_DOUBLE_EQ(d["map_T_laser"][0].get<double>(), 1.0) << "a LOST hypothesis is not drawn on";
 }
 
