@@ -135,6 +135,8 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
     buffer_.clear();
     ws_.async_read(buffer_, [self = shared_from_this()](beast::error_code ec, size_t) {
       if (ec == websocket::error::message_too_big) self->server_.count("requests_refused_too_large");
+      // Beast's idle timeout: no frame (not even a pong to its ping) from the client for 30 s.
+      if (ec == beast::error::timeout) self->server_.count("clients_dropped_idle");
       if (ec) return self->close();
       if (!self->ws_.got_text()) {
         self->server_.count("requests_refused_not_json");
@@ -331,6 +333,12 @@ void ConsoleServer::start() {
   s.accept_next();
   s.check_stalled_clients();
   s.thread = std::thread([&s] { s.ioc.run(); });
+}
+
+uint16_t ConsoleServer::port() const {
+  beast::error_code ec;
+  const tcp::endpoint endpoint = impl_->acceptor.local_endpoint(ec);
+  return ec ? 0 : endpoint.port();
 }
 
 void ConsoleServer::stop() {

@@ -32,6 +32,8 @@ class ConsoleServer {
   /// Binds and starts the server thread; throws std::runtime_error naming address and port
   /// when it cannot listen (address in use, not an address of this computer).
   void start();
+  /// The port listened on (the configured one; the kernel's choice when it was 0, for tests).
+  uint16_t port() const;
   /// Closes every connection and joins the thread (also done by the destructor).
   void stop();
 
