@@ -36,8 +36,8 @@ function renderLines() {
     : 'no POSE yet';
   const n = state.navStatus;
   $('nav-line').textContent = n
-    ? `navigator ${n.state} goal ${n.goal_id} waypoint ${n.waypoint_index + 1}/${n.waypoints}` +
-      ` ${n.distance_to_waypoint.toFixed(3)} m ${n.reason}`
+    ? `navigator ${n.state}` + (n.waypoints > 0 ? ` goal ${n.goal_id} waypoint ${n.waypoint_index + 1}/${n.waypoints}` +
+      ` ${n.distance_to_waypoint.toFixed(3)} m` : '') + ` ${n.reason}`
     : '';
   const s = state.scan;
   $('scan-line').textContent = s ? `${s.ranges_mm.length} beams, ${s.rssi_bits}-bit RSSI, page ≤ ${state.console.scan_rate_hz} Hz` : '';

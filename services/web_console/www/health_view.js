@@ -47,7 +47,7 @@ export function renderHealth(tbody, mapHealthEl, state) {
   const count = (s) => m.reflectors.filter((r) => r.state === s).length;
   const flagged = m.reflectors.filter((r) => r.state === 'missing' || r.state === 'moved')
     .map((r) => `${r.id} ${r.state}`).join(', ');
-  mapHealthEl.textContent = `map health (${m.map_id} v${m.map_version}, ${m.scans_used} scans): ` +
+  mapHealthEl.textContent = `map health (${m.map_id ? `${m.map_id} v${m.map_version}` : 'format-1 map'}, ${m.scans_used} scans): ` +
     `${count('ok')} ok, ${count('missing')} missing, ${count('moved')} moved, ${count('unconfirmed')} unconfirmed, ` +
     `${m.candidates.length} candidates${flagged ? ' — ' + flagged : ''}`;
 }
