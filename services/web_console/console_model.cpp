@@ -11,7 +11,10 @@ namespace {
 using nlohmann::json;
 
 ConsoleFrame frame(const json& j, std::string latest_key = "", bool send_now = true) {
-  return {std::move(latest_key), send_now, std::make_shared<const std::string>(j.dump())};
+  // Text from the bus (a heartbeat's detail, a navigator's reason) may be any bytes: invalid
+  // UTF-8 is replaced, never thrown on (a throw here would end the service).
+  return {std::move(latest_key), send_now,
+          std::make_shared<const std::string>(j.dump(-1, ' ', false, json::error_handler_t::replace))};
 }
 
 /// Metres to millimetres as an integer: the page needs no more, and frames stay small.

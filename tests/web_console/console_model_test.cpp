@@ -112,6 +112,17 @@ TEST(ConsoleModel, PosesAreDecimatedButEveryPoseFeedsItsBoundedTrail) {
   EXPECT_NEAR(t["points"][4][0].get<double>(), 1.98, 1e-9);
 }
 
+TEST(ConsoleModel, TextThatIsNotUtf8IsReplacedNotThrownOn) {
+  ConsoleModel model = demo_model();
+  ConsoleHeartbeat h;
+  h.service = "bad\xff\xfename";
+  h.detail = "\xc3";
+  ConsoleNavStatus status;
+  status.reason = "\x80\x80";
+  EXPECT_NO_THROW(parsed(model.on_heartbeat(h)));
+  EXPECT_NO_THROW(parsed(model.on_nav_status(status)));
+}
+
 TEST(ConsoleModel, EachServicesHeartbeatIsKeptUnderItsOwnName) {
   ConsoleModel model = demo_model();
   ConsoleHeartbeat h;
