@@ -20,7 +20,7 @@ struct PlanOptions {
   double crlb_limit_mm = 10.0;
   double range_sigma_mm = 12.0;
   double min_beams = 2.0;
-  int spot_samples = 51;
+  int spot_samples = 201;
   bool ambiguity = true;
   int suggest = 0;
   double suggest_spacing_m = 1.0;

@@ -25,6 +25,7 @@ QuickLayoutCheck quick_layout_check(const ReflectorMap& map, const std::string& 
   PlanConfig config;
   config.resolution = check.resolution;
   config.headings = check.headings;
+  config.spot = BeamSpotModel::point_beam();  // the warning reads no bound: the cheapest one
   const LayoutPlan plan = plan_layout(map, make_plan_grid(map, {}, check.resolution), config);
   check.summary = plan.summary;
   const PlanSummary& s = plan.summary;
