@@ -86,7 +86,7 @@ std::optional<ConsoleFrame> ConsoleModel::on_scan(const ConsoleScan& scan) {
     return std::nullopt;
   }
   json ranges = json::array();
-  for (const float r : scan.ranges) ranges.push_back(std::isfinite(r) ? mm(r) : 0);
+  for (const float r : scan.ranges) ranges.push_back(std::isfinite(r) && r > 0.0f && r < 1e6f ? mm(r) : 0);
   return frame({{"type", "scan"},
                 {"utime", scan.utime},
                 {"start_angle", scan.start_angle},
@@ -121,6 +121,7 @@ std::optional<ConsoleFrame> ConsoleModel::on_detections(const ConsoleDetections&
 
 std::optional<ConsoleFrame> ConsoleModel::on_matches(const ConsoleMatches& in) {
   if (in.status == "OK") map_T_laser_ = in.map_T_laser;  // from every scan, also those not sent
+  matches_status_ = in.status;
   if (!matches_rate_.accept(in.utime)) return std::nullopt;
   json matches = json::array();
   for (const ConsoleMatch& m : in.matches)
@@ -139,6 +140,11 @@ std::optional<ConsoleFrame> ConsoleModel::on_matches(const ConsoleMatches& in) {
 std::optional<ConsoleFrame> ConsoleModel::on_pose(PoseSource source, const ConsolePose& pose) {
   const int i = static_cast<int>(source);
   trails_[i].add(pose.x, pose.y);
+  if (source == PoseSource::kLaserPose) {
+    ++fixes_;
+    ok_fixes_ += pose.status == "OK" ? 1 : 0;
+  }
+  if (source == PoseSource::kPose) pose_status_ = pose.status;
   if (!pose_rates_[i].accept(pose.utime)) return std::nullopt;
   const std::string name = pose_source_name(source);
   return frame({{"type", "pose"},
@@ -211,6 +217,22 @@ ConsoleFrame ConsoleModel::on_map_health(const ConsoleMapHealth& in) {
                 {"reflectors", reflectors},
                 {"candidates", candidates}},
                "map_health");
+}
+
+ConsoleFrame ConsoleModel::localization_frame(int64_t now_mono_us) {
+  const double elapsed_s = last_localization_mono_us_ < 0
+                               ? 0.0
+                               : static_cast<double>(now_mono_us - last_localization_mono_us_) * 1e-6;
+  const auto per_s = [&](int64_t n) { return elapsed_s > 0.0 ? static_cast<double>(n) / elapsed_s : 0.0; };
+  const ConsoleFrame f = frame({{"type", "localization"},
+                                {"fixes_per_s", per_s(fixes_)},
+                                {"ok_fixes_per_s", per_s(ok_fixes_)},
+                                {"pose_status", pose_status_},
+                                {"matches_status", matches_status_}},
+                               "localization");
+  last_localization_mono_us_ = now_mono_us;
+  fixes_ = ok_fixes_ = 0;
+  return f;
 }
 
 std::vector<ConsoleFrame> ConsoleModel::trail_frames() const {

@@ -39,6 +39,9 @@ class ConsoleModel {
   ConsoleFrame on_nav_status(const ConsoleNavStatus& status);
   ConsoleFrame on_heartbeat(const ConsoleHeartbeat& heartbeat);
   ConsoleFrame on_map_health(const ConsoleMapHealth& health);
+  /// Localization at a glance, once a second: LASER_POSE fixes per second (all, and OK) since the
+  /// last call at now_mono_us [monotonic us], and the latest POSE and REFLECTOR_MATCHES status.
+  ConsoleFrame localization_frame(int64_t now_mono_us);
   /// One snapshot frame per trail, kept for clients that connect later (not sent now).
   std::vector<ConsoleFrame> trail_frames() const;
 
@@ -58,6 +61,11 @@ class ConsoleModel {
   /// The latest OK matches' map_T_laser: where the page draws scans and detections.
   std::optional<std::array<double, 3>> map_T_laser_;
   int64_t scans_skipped_ = 0;
+  int64_t fixes_ = 0;     ///< LASER_POSE messages since the last localization_frame
+  int64_t ok_fixes_ = 0;  ///< of them with status OK
+  int64_t last_localization_mono_us_ = -1;
+  std::string pose_status_ = "none";
+  std::string matches_status_ = "none";
 };
 
 }  // namespace refloc

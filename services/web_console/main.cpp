@@ -68,6 +68,7 @@ int run(const std::string& lcm_url, const std::string& config_path) {
   });
   runtime.add_periodic(1.0, [&] {
     for (const ConsoleFrame& frame : model.trail_frames()) server.send(frame);
+    server.send(model.localization_frame(monotonic_us()));
     for (const auto& [name, value] : server.counters()) runtime.counter(name) = value;
     runtime.counter("scans_skipped") = model.scans_skipped();
   });

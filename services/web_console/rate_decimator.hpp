@@ -9,22 +9,26 @@ namespace refloc {
 
 class RateDecimator {
  public:
-  explicit RateDecimator(double rate_hz) : period_us_(static_cast<int64_t>(1e6 / rate_hz)) {}
+  explicit RateDecimator(double rate_hz) : period_us_(1e6 / rate_hz) {}
 
-  /// Whether the message stamped utime [us] is let through.
+  /// Whether the message stamped utime [us] is let through. Any stamp is safe: the arithmetic is
+  /// in double (exact for every real stamp, < 2^53 us), so a hostile INT64_MIN cannot overflow.
   bool accept(int64_t utime) {
-    if (slot_us_ >= 0 && utime < slot_us_ - 1'000'000) slot_us_ = -1;
+    const double t = static_cast<double>(utime);
+    if (has_slot_ && t < slot_us_ - 1e6) has_slot_ = false;
     // A tenth of a period early still takes the next slot: 50 Hz in, 10 Hz out stays every
     // fifth scan when the stamps jitter.
-    if (slot_us_ >= 0 && utime < slot_us_ + period_us_ - period_us_ / 10) return false;
-    const bool far_behind = slot_us_ < 0 || utime - (slot_us_ + period_us_) > period_us_;
-    slot_us_ = far_behind ? utime : slot_us_ + period_us_;
+    if (has_slot_ && t < slot_us_ + period_us_ - period_us_ / 10) return false;
+    const bool far_behind = !has_slot_ || t - (slot_us_ + period_us_) > period_us_;
+    slot_us_ = far_behind ? t : slot_us_ + period_us_;
+    has_slot_ = true;
     return true;
   }
 
  private:
-  int64_t period_us_;
-  int64_t slot_us_ = -1;  ///< the stamp slot of the last message let through [us]
+  double period_us_;
+  bool has_slot_ = false;
+  double slot_us_ = 0.0;  ///< the stamp slot of the last message let through [us]
 };
 
 }  // namespace refloc

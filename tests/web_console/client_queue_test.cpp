@@ -2,6 +2,7 @@
 
 #include "web_console/client_queue.hpp"
 #include "web_console/pose_trail.hpp"
+#include "web_console/rate_decimator.hpp"
 
 #include <gtest/gtest.h>
 
@@ -43,6 +44,16 @@ TEST(PoseTrail, KeepsTheNewestPointsOldestFirstAndSkipsSmallSteps) {
   ASSERT_EQ(xs.size(), 3u);
   EXPECT_NEAR(xs[0], 0.4, 1e-12);
   EXPECT_NEAR(xs[2], 0.8, 1e-12);
+}
+
+TEST(RateDecimator, AnyStampIsSafeAndALogStartedAgainRestartsIt) {
+  RateDecimator rate(10.0);
+  EXPECT_TRUE(rate.accept(INT64_MAX));
+  EXPECT_TRUE(rate.accept(INT64_MIN)) << "far back: restarted";
+  EXPECT_FALSE(rate.accept(INT64_MIN + 1000));
+  EXPECT_TRUE(rate.accept(0));
+  EXPECT_FALSE(rate.accept(50'000));
+  EXPECT_TRUE(rate.accept(100'000));
 }
 
 }  // namespace

@@ -112,6 +112,25 @@ TEST(ConsoleModel, PosesAreDecimatedButEveryPoseFeedsItsBoundedTrail) {
   EXPECT_NEAR(t["points"][4][0].get<double>(), 1.98, 1e-9);
 }
 
+TEST(ConsoleModel, LocalizationCountsEveryLaserFixPerSecondAndTheOkOnes) {
+  ConsoleModel model = demo_model();
+  model.localization_frame(0);
+  for (int i = 0; i < 100; ++i) {  // 50 Hz for 2 s, every fifth not OK
+    ConsolePose fix;
+    fix.utime = i * 20'000;
+    fix.status = i % 5 == 0 ? "DEGRADED" : "OK";
+    model.on_pose(PoseSource::kLaserPose, fix);
+  }
+  ConsolePose pose;
+  pose.status = "OK";
+  model.on_pose(PoseSource::kPose, pose);
+  const nlohmann::json j = parsed(model.localization_frame(2'000'000));
+  EXPECT_DOUBLE_EQ(j["fixes_per_s"].get<double>(), 50.0);
+  EXPECT_DOUBLE_EQ(j["ok_fixes_per_s"].get<double>(), 40.0);
+  EXPECT_EQ(j["pose_status"], "OK");
+  EXPECT_DOUBLE_EQ(parsed(model.localization_frame(3'000'000))["fixes_per_s"].get<double>(), 0.0);
+}
+
 TEST(ConsoleModel, TextThatIsNotUtf8IsReplacedNotThrownOn) {
   ConsoleModel model = demo_model();
   ConsoleHeartbeat h;

@@ -8,7 +8,7 @@ const TRAIL_POINTS = 2000;  // points kept per trail in the page
 const state = {
   map: null, scan: null, detections: null, matches: null, goal: null, navStatus: null,
   mapHealth: null, poses: {}, trails: { POSE: [], LASER_POSE: [], GROUND_TRUTH: [] },
-  heartbeats: new Map(), console: { control_enabled: false },
+  heartbeats: new Map(), console: { control_enabled: false }, localization: null,
 };
 
 const mapView = new MapView(document.getElementById('map'), state, sendGoal);
@@ -63,6 +63,7 @@ const handlers = {
   nav_status: (f) => { state.navStatus = f; },
   heartbeat: (f) => { state.heartbeats.set(f.service, { ...f, received_ms: performance.now() }); },
   map_health: (f) => { state.mapHealth = f; },
+  localization: (f) => { state.localization = f; },
 };
 
 function connect() {

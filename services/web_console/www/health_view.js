@@ -20,6 +20,11 @@ function cell(row, text, cls) {
 }
 
 export function renderHealth(tbody, mapHealthEl, state) {
+  const l = state.localization;
+  document.getElementById('localization').textContent = l
+    ? `localization: POSE ${l.pose_status}, matcher ${l.matches_status}, fixes ${l.ok_fixes_per_s.toFixed(1)}/s OK ` +
+      `of ${l.fixes_per_s.toFixed(1)}/s (LASER_POSE)`
+    : '';
   tbody.replaceChildren();
   const now = performance.now();
   for (const h of [...state.heartbeats.values()].sort((a, b) => a.service.localeCompare(b.service))) {
