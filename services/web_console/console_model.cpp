@@ -179,6 +179,8 @@ ConsoleFrame ConsoleModel::on_nav_status(const ConsoleNavStatus& s) {
 }
 
 ConsoleFrame ConsoleModel::on_heartbeat(const ConsoleHeartbeat& h) {
+  const bool kept = kept_services_.count(h.service) > 0 ||
+                    (kept_services_.size() < kMaxKeptServices && kept_services_.insert(h.service).second);
   json counters = json::object();
   for (const auto& [name, value] : h.counters) counters[name] = value;
   return frame({{"type", "heartbeat"},
@@ -194,7 +196,7 @@ ConsoleFrame ConsoleModel::on_heartbeat(const ConsoleHeartbeat& h) {
                 {"processing_p50_us", h.processing_p50_us},
                 {"processing_p99_us", h.processing_p99_us},
                 {"counters", counters}},
-               "heartbeat/" + h.service);
+               kept ? "heartbeat/" + h.service : "");
 }
 
 ConsoleFrame ConsoleModel::on_map_health(const ConsoleMapHealth& in) {

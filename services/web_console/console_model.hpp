@@ -11,6 +11,7 @@
 #include "web_console/rate_decimator.hpp"
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,10 @@ class ConsoleModel {
   std::optional<ConsoleFrame> on_pose(PoseSource source, const ConsolePose& pose);
   ConsoleFrame on_goal(const ConsoleGoal& goal);
   ConsoleFrame on_nav_status(const ConsoleNavStatus& status);
+  /// Kept per service for later clients, at most kMaxKeptServices of them (a peer inventing
+  /// names must not grow the console); a heartbeat beyond is sent, not kept.
   ConsoleFrame on_heartbeat(const ConsoleHeartbeat& heartbeat);
+  static constexpr size_t kMaxKeptServices = 64;
   ConsoleFrame on_map_health(const ConsoleMapHealth& health);
   /// Localization at a glance, once a second: LASER_POSE fixes per second (all, and OK) since the
   /// last call at now_mono_us [monotonic us], and the latest POSE and REFLECTOR_MATCHES status.
@@ -61,6 +65,7 @@ class ConsoleModel {
   /// The latest OK matches' map_T_laser: where the page draws scans and detections.
   std::optional<std::array<double, 3>> map_T_laser_;
   int64_t scans_skipped_ = 0;
+  std::set<std::string> kept_services_;
   int64_t fixes_ = 0;     ///< LASER_POSE messages since the last localization_frame
   int64_t ok_fixes_ = 0;  ///< of them with status OK
   int64_t last_localization_mono_us_ = -1;

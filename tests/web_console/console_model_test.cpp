@@ -151,6 +151,13 @@ TEST(ConsoleModel, EachServicesHeartbeatIsKeptUnderItsOwnName) {
   const ConsoleFrame frame = model.on_heartbeat(h);
   EXPECT_EQ(frame.latest_key, "heartbeat/pose_solver");
   EXPECT_EQ(parsed(frame)["counters"]["lost_fixes"], 3);
+  for (size_t i = 0; i < 2 * ConsoleModel::kMaxKeptServices; ++i) {
+    h.service = "invented_" + std::to_string(i);
+    const ConsoleFrame invented = model.on_heartbeat(h);
+    EXPECT_EQ(invented.latest_key.empty(), i + 1 >= ConsoleModel::kMaxKeptServices) << i;
+  }
+  h.service = "pose_solver";
+  EXPECT_EQ(model.on_heartbeat(h).latest_key, "heartbeat/pose_solver") << "a known service stays kept";
   ConsoleMapHealth health;
   health.reflectors.push_back({4, "missing", 0, 60, 0.0, 0.0});
   EXPECT_EQ(parsed(model.on_map_health(health))["reflectors"][0]["state"], "missing");
