@@ -61,7 +61,11 @@ const handlers = {
   trail: (f) => { if (state.trails[f.channel].length === 0) state.trails[f.channel] = f.points; },
   goal: (f) => { state.goal = f; },
   nav_status: (f) => { state.navStatus = f; },
-  heartbeat: (f) => { state.heartbeats.set(f.service, { ...f, received_ms: performance.now() }); },
+  heartbeat: (f) => {  // at most 64 services, as the console keeps
+    if (state.heartbeats.has(f.service) || state.heartbeats.size < 64) {
+      state.heartbeats.set(f.service, { ...f, received_ms: performance.now() });
+    }
+  },
   map_health: (f) => { state.mapHealth = f; },
   localization: (f) => { state.localization = f; },
 };
