@@ -2,7 +2,6 @@
 metres, the reflectors, the occluders (walls, racks) and the drivable area drawn."""
 
 import json
-import math
 
 from refloc_plot_data import DataError
 
@@ -104,7 +103,7 @@ def _class_panel(ax, plan, cells, summary, title, suggestions, rivals):
     if rivals:
         confused = [c for c in cells if c.get("rival")]
         step = max(1, len(confused) // 12)
-        for i, c in enumerate(confused[::step]):
+        for c in confused[::step]:
             r = c["rival"]
             ax.annotate("", xy=(r["x_m"], r["y_m"]), xytext=(c["x_m"], c["y_m"]), zorder=6,
                         arrowprops=dict(arrowstyle="->", color="#67000d", lw=0.8, alpha=0.8),
@@ -152,7 +151,3 @@ def plot_plan(args, inputs, plt):
                      f"after adding the {len(plan['suggestions'])} suggested reflectors", True, True)
     axes[0].legend(loc="upper left", bbox_to_anchor=(0.0, -0.12), fontsize=7, frameon=False)
     return fig
-
-
-def finite_or_none(v):
-    return v if isinstance(v, (int, float)) and math.isfinite(v) else None
