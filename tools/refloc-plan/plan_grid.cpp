@@ -20,6 +20,7 @@ double polygon_area(const std::vector<Eigen::Vector2d>& points) {
 
 bool inside_polygon(const std::vector<Eigen::Vector2d>& points, const Eigen::Vector2d& map_p) {
   bool inside = false;
+  if (points.size() < 3) return false;
   for (size_t i = 0, j = points.size() - 1; i < points.size(); j = i++) {
     const Eigen::Vector2d& a = points[i];
     const Eigen::Vector2d& b = points[j];
