@@ -139,7 +139,9 @@ std::optional<ConsoleFrame> ConsoleModel::on_matches(const ConsoleMatches& in) {
 
 std::optional<ConsoleFrame> ConsoleModel::on_pose(PoseSource source, const ConsolePose& pose) {
   const int i = static_cast<int>(source);
-  trails_[i].add(pose.x, pose.y);
+  // The solver's LOST / AMBIGUOUS / INITIALIZING LASER_POSE carries zeros, not a pose.
+  const bool has_pose = source != PoseSource::kLaserPose || pose.status == "OK" || pose.status == "DEGRADED";
+  if (has_pose) trails_[i].add(pose.x, pose.y);
   if (source == PoseSource::kLaserPose) {
     ++fixes_;
     ok_fixes_ += pose.status == "OK" ? 1 : 0;

@@ -112,6 +112,28 @@ TEST(ConsoleModel, PosesAreDecimatedButEveryPoseFeedsItsBoundedTrail) {
   EXPECT_NEAR(t["points"][4][0].get<double>(), 1.98, 1e-9);
 }
 
+TEST(ConsoleModel, ALaserPoseWithoutAPoseStaysOutOfItsTrail) {
+  ConsoleModelConfig config;
+  config.trail_step_m = 0.01;
+  ConsoleModel model = demo_model(config);
+  ConsolePose pose;
+  pose.x = 5.0;
+  pose.y = 3.0;
+  pose.status = "OK";
+  model.on_pose(PoseSource::kLaserPose, pose);
+  for (const char* status : {"LOST", "AMBIGUOUS", "INITIALIZING"}) {
+    ConsolePose none;  // the solver's zeros
+    none.utime = pose.utime += 20'000;
+    none.status = status;
+    model.on_pose(PoseSource::kLaserPose, none);
+  }
+  pose.utime += 20'000;
+  pose.x = 5.1;
+  pose.status = "DEGRADED";
+  model.on_pose(PoseSource::kLaserPose, pose);
+  EXPECT_EQ(model.trail_size(PoseSource::kLaserPose), 2u);
+}
+
 TEST(ConsoleModel, LocalizationCountsEveryLaserFixPerSecondAndTheOkOnes) {
   ConsoleModel model = demo_model();
   model.localization_frame(0);

@@ -43,6 +43,8 @@ function renderLines() {
   $('scan-line').textContent = s ? `${s.ranges_mm.length} beams, ${s.rssi_bits}-bit RSSI, page ≤ ${state.console.scan_rate_hz} Hz` : '';
 }
 
+function hasPose(f) { return f.channel !== 'LASER_POSE' || f.status === 'OK' || f.status === 'DEGRADED'; }
+
 function addTrailPoint(channel, x, y) {
   const trail = state.trails[channel];
   const last = trail[trail.length - 1];
@@ -57,7 +59,12 @@ const handlers = {
   scan: (f) => { state.scan = f; },
   detections: (f) => { state.detections = f; },
   matches: (f) => { state.matches = f; },
-  pose: (f) => { state.poses[f.channel] = f; addTrailPoint(f.channel, f.x, f.y); },
+  // LASER_POSE without a pose (LOST, AMBIGUOUS, INITIALIZING) carries zeros: neither drawn nor trailed.
+  pose: (f) => {
+    if (!hasPose(f)) { delete state.poses[f.channel]; return; }
+    state.poses[f.channel] = f;
+    addTrailPoint(f.channel, f.x, f.y);
+  },
   trail: (f) => { if (state.trails[f.channel].length === 0) state.trails[f.channel] = f.points; },
   goal: (f) => { state.goal = f; },
   nav_status: (f) => { state.navStatus = f; },
