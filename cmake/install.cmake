@@ -43,7 +43,7 @@ install(DIRECTORY services/web_console/www/ DESTINATION services/web_console/www
 # run_mission.sh and refloc-eval draw their pictures with it (<root>/tools/refloc-plot).
 install(PROGRAMS tools/refloc-plot/refloc-plot.py tools/refloc-plot/residual_correlation.py
         DESTINATION tools/refloc-plot)
-install(FILES tools/refloc-plot/refloc_plot_data.py tools/refloc-plot/refloc_plot_draw.py
+install(FILES tools/refloc-plot/refloc_plot_data.py tools/refloc-plot/refloc_plot_draw.py tools/refloc-plot/refloc_plot_plan.py
               tools/refloc-plot/refloc_plot_studies.py tools/refloc-plot/README.md DESTINATION tools/refloc-plot)
 # refloc-survey drive draws its report with this script (<root>/tools/refloc-survey).
 install(PROGRAMS tools/refloc-survey/survey_drive_plot.py DESTINATION tools/refloc-survey)
