@@ -186,8 +186,10 @@ def main(argv):
     matplotlib.rcParams["svg.fonttype"] = "none"  # SVG text stays text (searchable, smaller)
     import matplotlib.pyplot as plt
     from refloc_plot_studies import plot_drive, plot_eval
-    from refloc_plot_plan import plot_plan
-    plots = {"mission": plot_mission, "eval": plot_eval, "drive": plot_drive, "plan": plot_plan}
+    plots = {"mission": plot_mission, "eval": plot_eval, "drive": plot_drive}
+    if args.command == "plan":
+        from refloc_plot_plan import plot_plan  # only refloc-plan's pictures need it
+        plots["plan"] = plot_plan
     fig = plots[args.command](args, inputs, plt)
     for out in outputs:
         try:
