@@ -3,12 +3,12 @@
 # 10.77.0.0/24), each running its part under supervisord via deploy/refloc with
 # its own REFLOC_PROGRAMS and REFLOC_RUN_DIR, LCM multicast with ttl=1:
 #   A 10.77.0.1  sensor side: lms100_driver (TCP to the emulator on C)
-#   B 10.77.0.2  reflector_extractor reflector_matcher pose_solver
+#   B 10.77.0.2  reflector_extractor reflector_matcher pose_solver web_console
 #   C 10.77.0.3  robot_sim (LMS100 emulator on 10.77.0.3) mecanum_odometry
 #                pose_fusion navigator lcm-logger, and refloc-mission
 # Checks: ttl=0 stays on its computer and ttl=1 crosses the bridge; the emulator
 # listens on C's bridge address only and A's driver is connected to it; the
-# mission completes (every waypoint); refloc-status on C hears all 8 services;
+# mission completes (every waypoint); refloc-status on C hears all 9 services;
 # C's LCM log holds the channels published on A and on B; no sanitizer reports.
 # Must run in a private netns (tests/tools/run_in_netns.sh): the bridge lives there.
 #   multihost_mission.sh REPO_ROOT BUILD_DIR [MISSION_JSON]
@@ -29,7 +29,7 @@ hosts=(a b c)
 declare -A addr=([a]=10.77.0.1 [b]=10.77.0.2 [c]=10.77.0.3)
 declare -A programs=(
   [a]="lms100_driver"
-  [b]="reflector_extractor reflector_matcher pose_solver"
+  [b]="reflector_extractor reflector_matcher pose_solver web_console"
   [c]="lcm-logger robot_sim mecanum_odometry pose_fusion navigator")
 declare -A holder=()
 peer_pid=""

@@ -57,13 +57,16 @@ std::optional<T> decode(const LogEventView& e) {
 
 /// The channel that shows a restarted service doing its job again.
 std::string output_channel(const std::string& service) {
-  static const std::map<std::string, std::string> channels{{"lms100_driver", "LMS100_SCAN"},
-                                                           {"reflector_extractor", "REFLECTORS"},
-                                                           {"reflector_matcher", "REFLECTOR_MATCHES"},
-                                                           {"pose_solver", "LASER_POSE"},
-                                                           {"mecanum_odometry", "ODOMETRY"},
-                                                           {"pose_fusion", "POSE"},
-                                                           {"navigator", "NAV_STATUS"}};
+  static const std::map<std::string, std::string> channels{
+      {"lms100_driver", "LMS100_SCAN"},
+      {"reflector_extractor", "REFLECTORS"},
+      {"reflector_matcher", "REFLECTOR_MATCHES"},
+      {"pose_solver", "LASER_POSE"},
+      {"mecanum_odometry", "ODOMETRY"},
+      {"pose_fusion", "POSE"},
+      {"navigator", "NAV_STATUS"},
+      // no output of its own on the bus: its HEARTBEAT OK
+      {"web_console", "HEARTBEAT"}};
   const auto it = channels.find(service);
   return it == channels.end() ? "" : it->second;
 }
@@ -92,6 +95,7 @@ std::vector<Event> read_log(const std::string& path) {
       if (!m) return;
       ev.service = m->service;
       ev.pid = m->pid;
+      ev.ok = m->state == heartbeat_t::STATE_OK;
       ev.start_utime = m->utime - m->uptime_us;
     } else if (ev.channel != "LMS100_SCAN" && ev.channel != "REFLECTORS" && ev.channel != "ODOMETRY") {
       return;
@@ -151,6 +155,7 @@ int check(const std::vector<Event>& events, const std::vector<Kill>& kills, doub
       // Messages received after the new process started are its own: the old one was dead before it.
       if (e.channel != channel || e.log_utime <= std::max(new_start, kill.kill_utime) || e.log_utime > to)
         continue;
+      if (channel == "HEARTBEAT" && (e.service != kill.service || e.pid != kill.new_pid)) continue;
       if (e.ok && !first_output) first_output = e.log_utime;
       if (kill.service == "reflector_matcher" && !first_ok_matches) {
         ++scans_before_ok;

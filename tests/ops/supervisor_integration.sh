@@ -51,7 +51,7 @@ grep -q "restart NAME" <<<"$help" || fail "--help"
 
 status="$("$refloc" status)" || true
 mapfile -t listed < <("$refloc" list)
-[ ${#listed[@]} -eq 9 ] || fail "deploy/services.list has ${#listed[@]} programs: ${listed[*]}"
+[ ${#listed[@]} -eq 10 ] || fail "deploy/services.list has ${#listed[@]} programs: ${listed[*]}"
 for program in "${listed[@]}"; do
   grep -q "^$program " <<<"$status" || fail "status does not list $program: $status"
 done
