@@ -92,6 +92,12 @@ FusionServiceConfig parse_fusion_service_config(const JsonConfig& config) {
                       "accepted detections that make a scan a fresh fix (for OK / DEGRADED / LOST); fewer "
                       "still correct the estimate"},
                      m.min_detections_for_fix, 1, 100));
+  m.max_noise_inflation =
+      config.number({"/model/max_noise_inflation", "",
+                     "when the kept detections' squared Mahalanobis distances average above 2, their "
+                     "covariance is inflated to match, up to this factor (1: never); keeps POSE's covariance "
+                     "honest on a host or sensor worse than the model"},
+                    m.max_noise_inflation, 1.0, 1000.0);
   OdometryContinuityConfig& o = c.continuity;
   o.max_gap = config.number({"/continuity/max_gap_s", "s",
                              "ODOMETRY messages further apart: a seam (motion unobserved, covariance grown, "

@@ -97,6 +97,7 @@ class FusionNode {
     set("odometry_error_turn_ppm", std::llround(s.odometry_error(2, 2) * 1e6));
     set("odometry_error_turn_per_x_ppm", std::llround(s.odometry_error(2, 0) * 1e6));
     set("detection_nis_milli", std::llround(nis_mean_ * 1e3));
+    set("noise_inflation_milli", std::llround(fusion_.noise_inflation() * 1e3));
   }
   /// Counters and log lines of the last on_odometry / on_fix call.
   const std::vector<NodeEvent>& events() const { return events_; }

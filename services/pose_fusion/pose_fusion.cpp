@@ -286,7 +286,8 @@ ScanResult PoseFusion::apply_scan(const DetectionScan& scan) {
   // scan's detections decides nothing and one wrong association cannot open the gate
   // for another.
   double nis = 0.0;
-  for (const MatchedDetection& d : scan.detections) {
+  for (MatchedDetection d : scan.detections) {
+    d.covariance *= noise_inflation_;  // stored inflated: a rollback re-applies the same update
     const DetectionInnovation in = detection_innovation(prior, d, config_.model.robot_T_laser, map_variance);
     if (in.mahalanobis_squared <= config_.model.detection_gate_chi2) {  // NaN fails the gate
       m.detections.push_back(d);
@@ -303,6 +304,14 @@ ScanResult PoseFusion::apply_scan(const DetectionScan& scan) {
   }
   nis_sum_ += nis;
   nis_count_ += result.accepted;
+  // Covariance matching: honest detections average 2. Kept ones that average more (a slow host
+  // stamping scans late, a sensor noisier than its model) inflate the detections' covariance,
+  // so the published covariance stays honest instead of the pose claiming millimetres it lacks.
+  // With the prior much tighter than a detection, the distance at inflation 1 is about the
+  // inflation times the one measured.
+  equivalent_nis_mean_ += 0.02 * (nis / result.accepted * noise_inflation_ - equivalent_nis_mean_);
+  noise_inflation_ =
+      std::clamp(equivalent_nis_mean_ / 2.0, 1.0, std::max(1.0, config_.model.max_noise_inflation));
   consecutive_rejections_ = 0;
   if (result.accepted >= config_.model.min_detections_for_fix)
     last_accepted_fix_utime_ = std::max(last_accepted_fix_utime_, scan.utime);

@@ -49,7 +49,10 @@ struct FusionModel {
   double map_sigma_m = 0.001;                      ///< the map positions' error, per axis [m]
   double detection_gate_chi2 = 13.82;              ///< chi-square 2 dof at 99.9 %
   int min_detections_for_fix = 2;                  ///< accepted detections that make a scan a fresh fix
-  Pose2 robot_T_laser{0.30, 0.0, 0.0};             ///< the laser mount (robot.json)
+  /// Upper bound of the detection covariance's inflation when the kept detections' squared
+  /// Mahalanobis distances average above 2 (covariance matching); 1: never inflated.
+  double max_noise_inflation = 10.0;
+  Pose2 robot_T_laser{0.30, 0.0, 0.0};  ///< the laser mount (robot.json)
 };
 
 struct FusionConfig {
@@ -142,6 +145,8 @@ class PoseFusion {
   /// Sum and count of the squared Mahalanobis distances of accepted detections since the
   /// last take_detection_nis() (an honest filter averages 2).
   std::pair<double, int> take_detection_nis();
+  /// The factor the detections' covariance is multiplied by now (1: the extractor's own).
+  double noise_inflation() const { return noise_inflation_; }
 
  private:
   /// A pose fix, or the accepted detections of one scan.
@@ -193,6 +198,8 @@ class PoseFusion {
   std::vector<Measurement> deferred_;
   std::vector<FixResult> deferred_results_;
   double nis_sum_ = 0.0;
+  double equivalent_nis_mean_ = 2.0;  ///< moving mean of the kept detections' Mahalanobis^2 at inflation 1
+  double noise_inflation_ = 1.0;
   int nis_count_ = 0;
 };
 

@@ -39,7 +39,12 @@ rss_limit_kb=$((50 * 1024))
 # Not `ldd | grep -q`: under pipefail grep's early exit fails ldd with SIGPIPE (seen in ctest).
 if [[ "$(ldd "$build/bin/pose_solver" 2>/dev/null)" == *libasan* ]]; then
   rss_limit_kb=$((150 * 1024))
-  echo "sanitized build: peak RSS bound 150 MB instead of 50 MB"
+  # ASan keeps freed memory in a quarantine (256 MB by default) to catch use after free: a
+  # service that allocates a lot per message (web_console builds a JSON frame for each) fills
+  # it under this test's traffic and its RSS reads 370 MB without growing. 32 MB keeps the
+  # check about growth; a real leak still crosses the bound.
+  export ASAN_OPTIONS="${ASAN_OPTIONS:-}${ASAN_OPTIONS:+:}quarantine_size_mb=32"
+  echo "sanitized build: peak RSS bound 150 MB instead of 50 MB, ASan quarantine 32 MB"
 fi
 mission_pid="" peer_pid="" passed=false
 failures=()
