@@ -220,13 +220,17 @@ void PoseFusion::commit(long i, Measurement m) {
   }
 }
 
+FixResult PoseFusion::time_refusal(int64_t t) const {
+  if (has_odometry_) {
+    if (!(static_cast<double>(t - utime()) <= config_.history * 1e6)) return FixResult::kAheadOfOdometry;
+    if (t < base_utime_) return FixResult::kTooOld;
+  }
+  return FixResult::kAccepted;
+}
+
 FixResult PoseFusion::add_fix(const PoseFix& fix) {
   // The time checks come first: they hold for (re-)initialisation too.
-  if (has_odometry_) {
-    if (!(static_cast<double>(fix.utime - utime()) <= config_.history * 1e6))
-      return FixResult::kAheadOfOdometry;
-    if (fix.utime < base_utime_) return FixResult::kTooOld;
-  }
+  if (const FixResult refused = time_refusal(fix.utime); refused != FixResult::kAccepted) return refused;
   // Lost is judged at the odometry's time, never at the fix's: a fix cannot declare
   // the filter lost by its own stamp.
   if (!initialised_ || lost(utime())) {
@@ -234,10 +238,10 @@ FixResult PoseFusion::add_fix(const PoseFix& fix) {
     initialise(fix);
     return FixResult::kInitialised;
   }
+  if (fix.utime < base_utime_) return FixResult::kTooOld;
   Measurement m;
   m.utime = fix.utime;
   m.fix = fix;
-  if (fix.utime < base_utime_) return FixResult::kTooOld;
   if (waits_for_odometry(fix.utime)) {
     defer(std::move(m));
     return FixResult::kDeferred;
@@ -256,11 +260,7 @@ FixResult PoseFusion::add_fix(const PoseFix& fix) {
 }
 
 ScanResult PoseFusion::add_detections(const DetectionScan& scan) {
-  if (has_odometry_) {
-    if (!(static_cast<double>(scan.utime - utime()) <= config_.history * 1e6))
-      return {FixResult::kAheadOfOdometry};
-    if (scan.utime < base_utime_) return {FixResult::kTooOld};
-  }
+  if (const FixResult refused = time_refusal(scan.utime); refused != FixResult::kAccepted) return {refused};
   if (needs_initialisation()) return {FixResult::kWaitingForGood};
   if (scan.utime < base_utime_) return {FixResult::kTooOld};
   if (waits_for_odometry(scan.utime)) {

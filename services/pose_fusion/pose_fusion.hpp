@@ -166,6 +166,10 @@ class PoseFusion {
 
   bool lost(int64_t now_utime) const;
   void initialise(const PoseFix& fix);
+  /// The refusal every measurement at t meets first, also before (re-)initialisation: newer than
+  /// the latest odometry by more than the history (kAheadOfOdometry) or older than the history
+  /// (kTooOld); kAccepted when it passes. No checks before the first odometry.
+  FixResult time_refusal(int64_t t) const;
   /// A measurement at t is ahead of odometry by more than max_fix_lead.
   bool waits_for_odometry(int64_t t) const;
   void defer(Measurement m);
