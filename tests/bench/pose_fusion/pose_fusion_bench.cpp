@@ -73,21 +73,14 @@ void place_matches(MatchesInput& in, const Pose2& map_T_robot, int64_t utime, in
 /// The matches of a robot at map_T_robot seeing n reflectors on a 10 m circle around it.
 MatchesInput matches_around(const Pose2& map_T_robot, int64_t utime, int64_t counter, int n) {
   MatchesInput in;
-  in.utime = utime;
-  in.scan_counter = counter;
   in.matcher_ok = true;
-  const Pose2 laser_T_map = (map_T_robot * Pose2{0.3, 0.0, 0.0}).inverse();
   for (int i = 0; i < n; ++i) {
-    const double a = 2.0 * M_PI * i / n;
-    const Eigen::Vector2d m(map_T_robot.x + 10.0 * std::cos(a), map_T_robot.y + 10.0 * std::sin(a));
+    in.matches.push_back({i, i + 1, Eigen::Vector2d::Zero(), 0.06});
     ReflectorDetection d;
-    d.laser_p_center = laser_T_map * m;
     d.covariance = Eigen::Matrix2d::Identity() * 1e-5;
-    d.range = d.laser_p_center.norm();
-    d.bearing = std::atan2(d.laser_p_center.y(), d.laser_p_center.x());
-    in.matches.push_back({i, i + 1, m, 0.06});
     in.detections.push_back(d);
   }
+  place_matches(in, map_T_robot, utime, counter);
   return in;
 }
 
