@@ -66,6 +66,10 @@ Lms100EmulatorConfig parse_emulator_config(const JsonConfig& c) {
 
   out.processing_delay_s = c.number({"/processing_delay_s", "s", "last beam to telegram ready"},
                                     out.processing_delay_s, 0.0, 0.004);
+  out.link_delay_s = c.number(
+      {"/link_delay_s", "s",
+       "transmission stamp to bytes at the host, unseen by the host: the driver's stamps run this late"},
+      out.link_delay_s, 0.0, 0.02);
   out.power_up_clock_us = static_cast<uint32_t>(
       c.integer({"/power_up_clock_us", "us", "sensor clock at power-up; near 2^32 tests its wrap"}, 0, 0,
                 0xFFFFFFFFLL));

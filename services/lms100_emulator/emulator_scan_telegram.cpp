@@ -4,6 +4,7 @@
 #include "lms100_emulator/emulator_server.hpp"
 #include "lms100_emulator/lmd_scandata_encoder.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace refloc {
@@ -45,7 +46,14 @@ void Lms100Emulator::Server::emit_scan(const ScanSlot& slot, bool stream) {
   header.telegram_counter = telegram_counter;
   header.scan_counter = slot.scan_counter;
   header.time_since_startup_us = static_cast<uint32_t>(config.power_up_clock_us + scan.first_beam_sensor_us);
-  header.time_of_transmission_us = static_cast<uint32_t>(config.power_up_clock_us + slot.complete_us);
+  // Stamped as the bytes leave (after rendering, which a real device does while it spins), less
+  // the hidden link delay; never before the scan was ready. Stamped at the slot's due time instead,
+  // the render time became a link delay the driver cannot see (0.8 ms in Release, more sanitized).
+  const auto link_delay_us = static_cast<uint64_t>(std::llround(config.link_delay_s * 1e6));
+  const uint64_t ready_us = slot.complete_us > link_delay_us ? slot.complete_us - link_delay_us : 0;
+  const uint64_t now_us = device_now();
+  const uint64_t transmit_us = std::max(ready_us, now_us > link_delay_us ? now_us - link_delay_us : 0);
+  header.time_of_transmission_us = static_cast<uint32_t>(config.power_up_clock_us + transmit_us);
   header.scan_frequency_1e2hz = device.scan_frequency_1e2hz();
   header.measurement_frequency_1e1khz = kMeasurementFrequency1e1khz;
   header.reserved = settings.layer_angle_1e4deg;  // the multi-layer fault; 0 on an LMS1xx

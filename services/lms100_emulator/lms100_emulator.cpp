@@ -29,8 +29,9 @@ void Lms100Emulator::Server::run() {
   while (!stop.load()) {
     const int64_t now_mono = monotonic_us();
     apply_faults(now_mono);
-    const auto complete_delay = static_cast<uint64_t>(
-        std::llround((device.full_scan_beams() * kTimeIncrementS + config.processing_delay_s) * 1e6));
+    const auto complete_delay = static_cast<uint64_t>(std::llround(
+        (device.full_scan_beams() * kTimeIncrementS + config.processing_delay_s + config.link_delay_s) *
+        1e6));
     ScanSlot slot;
     // stop is checked per scan: a renderer slower than the scan period (a Debug build) would
     // otherwise always have another scan due and never see it.

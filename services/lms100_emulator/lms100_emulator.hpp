@@ -21,7 +21,11 @@ struct Lms100EmulatorConfig {
   uint16_t port = 2111;  ///< 0 = ephemeral (tests); see Lms100Emulator::port()
   bool cola_b = false;   ///< speak CoLa-B (binary, SICK's port 2112) instead of CoLa-A
   Lms100DeviceConfig device;
-  double processing_delay_s = 0.001;    ///< last beam to telegram ready [s]
+  double processing_delay_s = 0.001;  ///< last beam to telegram ready [s]
+  /// Transmission stamp to the bytes reaching the host, unseen by the host (a real LMS100's
+  /// Ethernet: ~0.4 ms for a 5 kB telegram at 100 Mbit/s). The emulator writes the telegram this
+  /// long after the stamp it puts in it, so the driver's stamps run this much late [s].
+  double link_delay_s = 0.0;
   uint32_t power_up_clock_us = 0;       ///< device clock at power-up [us]; near 2^32 tests the wrap
   uint16_t first_telegram_counter = 0;  ///< near 65535 tests the counter wrap
   int startup_status_scans = 0;      ///< stream telegrams after sEN with device status "1 0" (real LMS111: 7)

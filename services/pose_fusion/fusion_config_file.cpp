@@ -98,6 +98,17 @@ FusionServiceConfig parse_fusion_service_config(const JsonConfig& config) {
                      "covariance is inflated to match, up to this factor (1: never); keeps POSE's covariance "
                      "honest on a host or sensor worse than the model"},
                     m.max_noise_inflation, 1.0, 1000.0);
+  m.estimate_scan_time_offset = config.boolean(
+      {"/model/estimate_scan_time_offset", "",
+       "estimate the scans' time offset (true measurement time - stamp); false: stamps taken as exact"},
+      m.estimate_scan_time_offset);
+  m.scan_time_offset_prior_sigma_s = config.number(
+      {"/model/scan_time_offset_prior_sigma_s", "s",
+       "the scans' time offset before it is estimated, 1 sigma (a link delay no clock fit sees)"},
+      m.scan_time_offset_prior_sigma_s, 0.0, 0.02);
+  m.scan_time_offset_drift_s_per_sqrt_s =
+      config.number({"/model/scan_time_offset_drift_s_per_sqrt_s", "s/sqrt(s)", "random walk of that offset"},
+                    m.scan_time_offset_drift_s_per_sqrt_s, 0.0, 0.01);
   OdometryContinuityConfig& o = c.continuity;
   o.max_gap = config.number({"/continuity/max_gap_s", "s",
                              "ODOMETRY messages further apart: a seam (motion unobserved, covariance grown, "

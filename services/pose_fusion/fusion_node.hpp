@@ -84,8 +84,9 @@ class FusionNode {
   /// One REFLECTOR_MATCHES message (measurements "detections"); never publishes by itself.
   void on_matches(const MatchesInput& input, int64_t now_mono_us, int64_t host_utime);
 
-  /// The heartbeat gauges (name, integer value): the range bias and the odometry calibration
-  /// the filter estimates, and the mean squared Mahalanobis distance of accepted detections.
+  /// The heartbeat gauges (name, integer value): the range bias, the odometry calibration and
+  /// the scans' time offset the filter estimates, and the mean squared Mahalanobis distance of accepted
+  /// detections.
   template <typename Set>
   void for_each_gauge(Set&& set) const {
     const FusionState& s = fusion_.state();
@@ -96,6 +97,8 @@ class FusionNode {
     set("odometry_error_yy_ppm", std::llround(s.odometry_error(1, 1) * 1e6));
     set("odometry_error_turn_ppm", std::llround(s.odometry_error(2, 2) * 1e6));
     set("odometry_error_turn_per_x_ppm", std::llround(s.odometry_error(2, 0) * 1e6));
+    set("scan_time_offset_us", std::llround(s.scan_time_offset_s * 1e6));
+    set("scan_time_offset_sigma_us", std::llround(sigma(StateIndex::kScanTimeOffset) * 1e6));
     set("detection_nis_milli", std::llround(nis_mean_ * 1e3));
     set("noise_inflation_milli", std::llround(fusion_.noise_inflation() * 1e3));
   }

@@ -20,6 +20,7 @@ void add_to_state(FusionState& state, const StateVector& dx) {
   state.range_bias_m += dx(StateIndex::kRangeBias);
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) state.odometry_error(r, c) += dx(StateIndex::kOdometryError + 3 * r + c);
+  state.scan_time_offset_s += dx(StateIndex::kScanTimeOffset);
 }
 
 /// P - K H P with K = P H^T S^-1, kept symmetric. Cheaper than the Joseph form and
@@ -62,6 +63,8 @@ void ekf_predict(FusionState& state, const Pose2& measured_delta, const Eigen::M
   const double motion = std::hypot(d.x(), d.y()) + std::abs(d.z());
   const double e_var = walk.odometry_error_per_sqrt_m * walk.odometry_error_per_sqrt_m * motion;
   for (int i = 0; i < 9; ++i) p(StateIndex::kOdometryError + i, StateIndex::kOdometryError + i) += e_var;
+  p(StateIndex::kScanTimeOffset, StateIndex::kScanTimeOffset) +=
+      walk.scan_time_offset_s_per_sqrt_s * walk.scan_time_offset_s_per_sqrt_s * std::max(dt_s, 0.0);
 }
 
 double pose_mahalanobis_squared(const FusionState& state, const Pose2& z, const Eigen::Matrix3d& r) {
@@ -81,7 +84,8 @@ void ekf_correct_pose(FusionState& state, const Pose2& z, const Eigen::Matrix3d&
 }
 
 DetectionInnovation detection_innovation(const FusionState& state, const MatchedDetection& detection,
-                                         const Pose2& robot_T_laser, double map_variance) {
+                                         const Pose2& robot_T_laser, double map_variance,
+                                         const ScanTiming& timing) {
   Eigen::Vector2d residual_no_bias;
   Eigen::Matrix<double, 2, 3> d_residual_d_pose;
   laser_point_residual_and_jacobian(detection.map_point, detection.laser_point, state.map_T_robot,
@@ -90,9 +94,12 @@ DetectionInnovation detection_innovation(const FusionState& state, const Matched
   const Eigen::Vector2d u = measured_range > 0.0 ? Eigen::Vector2d(detection.laser_point / measured_range)
                                                  : Eigen::Vector2d::Zero();
   DetectionInnovation out;
-  out.y = residual_no_bias - state.range_bias_m * u;
+  // The measured point is where the map point was tau after the stamp: z = h(x) + b u + tau g.
+  const Eigen::Vector2d g = laser_point_rate(detection.laser_point, timing);
+  out.y = residual_no_bias - state.range_bias_m * u - state.scan_time_offset_s * g;
   out.h.leftCols<3>() = -d_residual_d_pose;
   out.h.col(StateIndex::kRangeBias) = u;
+  out.h.col(StateIndex::kScanTimeOffset) = g;
   out.r = detection.covariance + map_variance * Eigen::Matrix2d::Identity();
   out.s = out.h * state.covariance * out.h.transpose() + out.r;
   const Eigen::LDLT<Eigen::Matrix2d> ldlt(out.s);
@@ -104,6 +111,17 @@ DetectionInnovation detection_innovation(const FusionState& state, const Matched
 
 void ekf_correct_detection(FusionState& state, const DetectionInnovation& innovation) {
   correct<2>(state, innovation.y, innovation.h, innovation.s);
+}
+
+Eigen::Vector2d laser_point_rate(const Eigen::Vector2d& laser_point, const ScanTiming& timing) {
+  // z = R^T (m - p): dz/dt = -w J z - v, J the +90 deg rotation.
+  return -timing.yaw_rate * Eigen::Vector2d(-laser_point.y(), laser_point.x()) - timing.laser_velocity;
+}
+
+void ekf_correct_scan(FusionState& state, const std::vector<MatchedDetection>& detections,
+                      const Pose2& robot_T_laser, double map_variance, const ScanTiming& timing) {
+  for (const MatchedDetection& d : detections)
+    ekf_correct_detection(state, detection_innovation(state, d, robot_T_laser, map_variance, timing));
 }
 
 }  // namespace refloc

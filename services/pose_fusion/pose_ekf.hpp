@@ -6,6 +6,11 @@
 // odometry: a drift proportional to the motion, which the filter learns from the laser
 // instead of covering it with a large random process noise (services/pose_fusion/README.md).
 //
+// The fourteenth state is the scans' time offset tau = true measurement time - stamp: a link
+// delay no clock fit can see (a real LMS100's Ethernet, ~0.4 ms) or a stamping error. It moves
+// every detection along the laser's motion (tau times the point's rate), so it shows only while
+// the robot moves and turns, and until it is known the pose's covariance carries it.
+//
 // Measurements: an absolute pose (a LASER_POSE fix; identity model, heading innovation
 // wrapped), or one matched reflector detection: the laser-frame centre z of map reflector
 // m is z = laser_T_map * m + b * u, u the measured direction, with the detection's 2x2
@@ -15,15 +20,18 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace refloc {
 
-constexpr int kStateDim = 13;
+constexpr int kStateDim = 14;
 using StateCovariance = Eigen::Matrix<double, kStateDim, kStateDim>;
 /// Where each part of the state sits in StateCovariance.
 struct StateIndex {
-  static constexpr int kPose = 0;           ///< x, y, theta
-  static constexpr int kRangeBias = 3;      ///< b
-  static constexpr int kOdometryError = 4;  ///< E, row-major (E00 E01 E02 E10 ... E22)
+  static constexpr int kPose = 0;             ///< x, y, theta
+  static constexpr int kRangeBias = 3;        ///< b
+  static constexpr int kOdometryError = 4;    ///< E, row-major (E00 E01 E02 E10 ... E22)
+  static constexpr int kScanTimeOffset = 13;  ///< tau
 };
 
 /// The pose with the 3x3 block of its covariance.
@@ -36,7 +44,8 @@ struct FusionState {
   Pose2 map_T_robot;
   double range_bias_m = 0.0;                                 ///< b = measured - true range [m]
   Eigen::Matrix3d odometry_error = Eigen::Matrix3d::Zero();  ///< E: true increment = (I + E) measured
-  StateCovariance covariance = StateCovariance::Zero();      ///< [m, rad, m, 1] units per state
+  double scan_time_offset_s = 0.0;                           ///< tau = true scan time - stamp [s]
+  StateCovariance covariance = StateCovariance::Zero();      ///< [m, rad, m, 1, s] units per state
 
   PoseEstimate pose() const { return {map_T_robot, covariance.topLeftCorner<3, 3>()}; }
 };
@@ -46,6 +55,7 @@ struct StateRandomWalk {
   double range_bias_m_per_sqrt_s = 0.0;
   /// Per sqrt of motion, a radian turned counting as a metre driven [1/sqrt(m)].
   double odometry_error_per_sqrt_m = 0.0;
+  double scan_time_offset_s_per_sqrt_s = 0.0;
 };
 
 /// x' = x * ((I + E) delta); q the covariance of the random part of delta (body frame);
@@ -75,10 +85,23 @@ struct DetectionInnovation {
   double mahalanobis_squared = 0.0;                 ///< y^T S^-1 y; NaN when S is singular
 };
 
+/// The laser's twist at a scan, in its own frame: what turns the time offset into metres.
+struct ScanTiming {
+  Eigen::Vector2d laser_velocity = Eigen::Vector2d::Zero();  ///< [m/s]
+  double yaw_rate = 0.0;                                     ///< [rad/s]
+};
+
+/// d(laser-frame point)/dt: a fixed point seen from a moving laser.
+Eigen::Vector2d laser_point_rate(const Eigen::Vector2d& laser_point, const ScanTiming& timing);
+
 /// robot_T_laser: the laser mount; map_variance: the map position's variance per axis [m^2].
 DetectionInnovation detection_innovation(const FusionState& state, const MatchedDetection& detection,
-                                         const Pose2& robot_T_laser, double map_variance);
+                                         const Pose2& robot_T_laser, double map_variance,
+                                         const ScanTiming& timing = {});
 /// Kalman update with one detection's innovation (computed on this state).
 void ekf_correct_detection(FusionState& state, const DetectionInnovation& innovation);
+/// One detection after the other, each innovation computed on the state the previous one left.
+void ekf_correct_scan(FusionState& state, const std::vector<MatchedDetection>& detections,
+                      const Pose2& robot_T_laser, double map_variance, const ScanTiming& timing);
 
 }  // namespace refloc

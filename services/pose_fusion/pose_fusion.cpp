@@ -6,6 +6,7 @@
 #include "common/se2.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace refloc {
 
@@ -35,6 +36,9 @@ void set_model_prior(FusionState& state, const FusionModel& model) {
   const double e_sigma = model.estimate_odometry_error ? model.odometry_error_prior_sigma : 0.0;
   for (int i = 0; i < 9; ++i)
     state.covariance(StateIndex::kOdometryError + i, StateIndex::kOdometryError + i) = e_sigma * e_sigma;
+  state.scan_time_offset_s = 0.0;
+  const double tau_sigma = model.estimate_scan_time_offset ? model.scan_time_offset_prior_sigma_s : 0.0;
+  state.covariance(StateIndex::kScanTimeOffset, StateIndex::kScanTimeOffset) = tau_sigma * tau_sigma;
 }
 
 }  // namespace
@@ -43,6 +47,8 @@ PoseFusion::PoseFusion(const FusionConfig& config) : config_(config) {
   const FusionModel& m = config.model;
   walk_.range_bias_m_per_sqrt_s = m.estimate_range_bias ? m.range_bias_drift_m_per_sqrt_s : 0.0;
   walk_.odometry_error_per_sqrt_m = m.estimate_odometry_error ? m.odometry_error_walk_per_sqrt_m : 0.0;
+  walk_.scan_time_offset_s_per_sqrt_s =
+      m.estimate_scan_time_offset ? m.scan_time_offset_drift_s_per_sqrt_s : 0.0;
   set_model_prior(base_, m);
 }
 
@@ -131,8 +137,29 @@ void PoseFusion::apply(FusionState& state, const Measurement& m) const {
     return;
   }
   const double map_variance = config_.model.map_sigma_m * config_.model.map_sigma_m;
-  for (const MatchedDetection& d : m.detections)
-    ekf_correct_detection(state, detection_innovation(state, d, config_.model.robot_T_laser, map_variance));
+  ekf_correct_scan(state, m.detections, config_.model.robot_T_laser, map_variance, m.timing);
+}
+
+ScanTiming PoseFusion::scan_timing(long i) const {
+  ScanTiming timing;
+  // A step split at the scan has two parts of one constant twist: the longer one divides best.
+  const auto duration_s = [&](long k) {
+    const int64_t start = k == 0 ? base_utime_ : steps_[static_cast<size_t>(k - 1)].utime;
+    return static_cast<double>(steps_[static_cast<size_t>(k)].utime - start) * 1e-6;
+  };
+  long k = -1;
+  for (long c : {i, i + 1})
+    if (c >= 0 && c < static_cast<long>(steps_.size()) && (k < 0 || duration_s(c) > duration_s(k))) k = c;
+  if (k < 0 || !(duration_s(k) > 0.0)) return timing;
+  const BodyTwist log = se2_log(steps_[static_cast<size_t>(k)].delta);
+  const double vx = log.vx / duration_s(k), vy = log.vy / duration_s(k), wz = log.wz / duration_s(k);
+  const Pose2& mount = config_.model.robot_T_laser;
+  const Eigen::Vector2d robot_velocity_at_laser(vx - wz * mount.y, vy + wz * mount.x);
+  const double c = std::cos(mount.theta), s = std::sin(mount.theta);
+  timing.laser_velocity = {c * robot_velocity_at_laser.x() + s * robot_velocity_at_laser.y(),
+                           -s * robot_velocity_at_laser.x() + c * robot_velocity_at_laser.y()};
+  timing.yaw_rate = wz;
+  return timing;
 }
 
 void PoseFusion::recompute(size_t i) {
@@ -282,13 +309,15 @@ ScanResult PoseFusion::apply_scan(const DetectionScan& scan) {
   Measurement m;
   m.utime = scan.utime;
   m.is_scan = true;
+  m.timing = scan_timing(i);
   // Every detection is gated against the estimate before this scan, so the order of a
   // scan's detections decides nothing and one wrong association cannot open the gate
   // for another.
   double nis = 0.0;
   for (MatchedDetection d : scan.detections) {
     d.covariance *= noise_inflation_;  // stored inflated: a rollback re-applies the same update
-    const DetectionInnovation in = detection_innovation(prior, d, config_.model.robot_T_laser, map_variance);
+    const DetectionInnovation in =
+        detection_innovation(prior, d, config_.model.robot_T_laser, map_variance, m.timing);
     if (in.mahalanobis_squared <= config_.model.detection_gate_chi2) {  // NaN fails the gate
       m.detections.push_back(d);
       nis += in.mahalanobis_squared;

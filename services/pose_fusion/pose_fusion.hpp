@@ -52,7 +52,13 @@ struct FusionModel {
   /// Upper bound of the detection covariance's inflation when the kept detections' squared
   /// Mahalanobis distances average above 2 (covariance matching); 1: never inflated.
   double max_noise_inflation = 10.0;
-  Pose2 robot_T_laser{0.30, 0.0, 0.0};  ///< the laser mount (robot.json)
+  /// The scans' time offset (true measurement time - stamp) is estimated: a link delay no clock
+  /// fit can see (a real LMS100's Ethernet ~0.4 ms), stamping. Until the robot has moved and
+  /// turned enough to tell it, the pose's covariance carries its prior.
+  bool estimate_scan_time_offset = true;
+  double scan_time_offset_prior_sigma_s = 0.001;      ///< [s]
+  double scan_time_offset_drift_s_per_sqrt_s = 1e-5;  ///< [s/sqrt(s)]
+  Pose2 robot_T_laser{0.30, 0.0, 0.0};                ///< the laser mount (robot.json)
 };
 
 struct FusionConfig {
@@ -155,6 +161,7 @@ class PoseFusion {
     bool is_scan = false;
     PoseFix fix;
     std::vector<MatchedDetection> detections;
+    ScanTiming timing;  ///< the laser's twist at the scan, from the odometry step it falls in
   };
   struct Step {
     int64_t utime = 0;  ///< end of the step (start: the previous step's or the base's utime)
@@ -165,6 +172,8 @@ class PoseFusion {
   };
 
   bool lost(int64_t now_utime) const;
+  /// The laser's twist over step i (constant over a step) and the model's timing variance.
+  ScanTiming scan_timing(long i) const;
   void initialise(const PoseFix& fix);
   /// The refusal every measurement at t meets first, also before (re-)initialisation: newer than
   /// the latest odometry by more than the history (kAheadOfOdometry) or older than the history

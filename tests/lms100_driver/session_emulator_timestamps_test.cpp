@@ -100,6 +100,42 @@ TEST(SessionEmulatorTimestamps, MergedBurstsStallAndReconnectAllStampedWithinTwo
   EXPECT_EQ(not_increasing, 0u);
 }
 
+// The stamps' systematic error on a quiet link, and the hidden link delay that no clock fit can
+// see: with link_delay_s the telegram leaves that long after its transmission stamp, so every
+// stamp runs that much late (pose_fusion's model/scan_time_sigma_s is what covers it).
+TEST(SessionEmulatorTimestamps, StampsRunLateByTheHiddenLinkDelayAndNoMore) {
+  const auto median_error_us = [](double link_delay_s) {
+    Lms100EmulatorConfig emulator_config;
+    emulator_config.port = 0;
+    emulator_config.device.spin_up_s = 0.1;
+    emulator_config.link_delay_s = link_delay_s;
+    Lms100Emulator emulator(emulator_config, make_test_pattern_scan_source());
+    emulator.start();
+    Lms100SessionConfig config;
+    config.host = "127.0.0.1";
+    config.port = emulator.port();
+    Sink sink;
+    Lms100Session session(config, [&](const LaserScan& s) { sink.add(s); });
+    session.start_thread();
+    EXPECT_TRUE(sink.wait_for(60, 10s)) << "got " << sink.count();
+    session.join();
+    emulator.stop();
+    std::lock_guard<std::mutex> lock(sink.mutex);
+    std::vector<double> errors_us;
+    for (const LaserScan& s : sink.scans)
+      errors_us.push_back(static_cast<double>(s.utime - (emulator.power_up_utime() + s.sensor_start_us)));
+    if (errors_us.empty()) return 1e9;
+    std::nth_element(errors_us.begin(), errors_us.begin() + errors_us.size() / 2, errors_us.end());
+    return errors_us[errors_us.size() / 2];
+  };
+  const double quiet_us = median_error_us(0.0);
+  const double delayed_us = median_error_us(0.002);
+  std::printf("median stamp - true first beam: %.0f us on loopback, %.0f us with a 2 ms hidden link delay\n",
+              quiet_us, delayed_us);
+  EXPECT_LT(std::fabs(quiet_us), 500.0);
+  EXPECT_NEAR(delayed_us - quiet_us, 2000.0, 500.0);
+}
+
 }  // namespace
 }  // namespace refloc
 

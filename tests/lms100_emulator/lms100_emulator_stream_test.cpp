@@ -1,6 +1,7 @@
 // The scan stream over real loopback TCP: rate without drift, counters, per-beam
 // timing fields, clock and counter wrap, and the telegram content.
 
+#include "common/clock.hpp"
 #include "emulator_fixture.hpp"
 
 #include <gtest/gtest.h>
@@ -39,8 +40,12 @@ TEST(Lms100EmulatorStream, FiftyHertzScansArriveEveryTwentyMillisecondsWithCount
     EXPECT_EQ(b.scan_counter, (a.scan_counter + 1) & 0xFFFF);
     EXPECT_EQ(b.time_since_startup_us - a.time_since_startup_us, 20000u);
   }
-  // 541 beams at 36 kHz (15.03 ms) plus 1 ms processing between beam 0 and transmission.
-  EXPECT_EQ(scans[0].data.time_of_transmission_us - scans[0].data.time_since_startup_us, 16028u);
+  // 541 beams at 36 kHz (15.03 ms) plus 1 ms processing between beam 0 and the telegram being
+  // ready; the stamp is taken as it is written, after the render (less than a scan period).
+  for (const ReceivedScan& s : scans) {
+    EXPECT_GE(s.data.time_of_transmission_us - s.data.time_since_startup_us, 16028u);
+    EXPECT_LT(s.data.time_of_transmission_us - s.data.time_since_startup_us, 16028u + 20000u);
+  }
   EXPECT_EQ(scans[0].data.measurement_frequency_1e1khz, 360u);
   EXPECT_EQ(scans[0].data.scan_frequency_1e2hz, 5000u);
   // Host arrival follows the device clock: the receive-minus-device offset does not drift.
@@ -55,6 +60,34 @@ TEST(Lms100EmulatorStream, FiftyHertzScansArriveEveryTwentyMillisecondsWithCount
   const double first_half_min_ms = *std::min_element(offsets_ms.begin(), half);
   const double second_half_min_ms = *std::min_element(half, offsets_ms.end());
   EXPECT_NEAR(second_half_min_ms, first_half_min_ms, 5.0) << "receive-minus-device drift over 1 s [ms]";
+}
+
+// link_delay_s: the telegram reaches the host that much later after its first beam, while the
+// transmission stamp in it does not move: a delay the driver's clock fit cannot see.
+TEST(Lms100EmulatorStream, LinkDelayHoldsTheTelegramBackWithoutMovingItsStamps) {
+  const auto least_delay = [](double link_delay_s, double& least_arrival_ms, double& least_stamp_ms) {
+    Lms100EmulatorConfig config = make_test_emulator_config();
+    config.link_delay_s = link_delay_s;
+    auto emulator = start_emulator(config);
+    EmulatorTestClient client(emulator->port());
+    ASSERT_TRUE(subscribe_to_stream(client));
+    const std::vector<ReceivedScan> scans = collect_scans(client, 30);
+    ASSERT_EQ(scans.size(), 30u);
+    least_arrival_ms = least_stamp_ms = 1e9;
+    const int64_t wall_minus_mono_us = now_utime() - monotonic_us();
+    for (const ReceivedScan& s : scans) {
+      const int64_t first_beam_utime = emulator->power_up_utime() + int64_t{s.data.time_since_startup_us};
+      least_arrival_ms =
+          std::min(least_arrival_ms, (s.receive_mono_us + wall_minus_mono_us - first_beam_utime) / 1000.0);
+      least_stamp_ms =
+          std::min(least_stamp_ms, (s.data.time_of_transmission_us - s.data.time_since_startup_us) / 1000.0);
+    }
+  };
+  double arrival_0 = 0, stamp_0 = 0, arrival_3 = 0, stamp_3 = 0;
+  least_delay(0.0, arrival_0, stamp_0);
+  least_delay(0.003, arrival_3, stamp_3);
+  EXPECT_NEAR(arrival_3 - arrival_0, 3.0, 1.0) << "first beam to arrival [ms]";
+  EXPECT_NEAR(stamp_3 - stamp_0, 0.0, 1.0) << "first beam to transmission stamp [ms]";
 }
 
 TEST(Lms100EmulatorStream, TelegramCarriesTheSourceValuesAtTheirBeamAngles) {

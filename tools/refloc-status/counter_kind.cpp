@@ -8,7 +8,7 @@ namespace {
 
 // Counters of normal operation and gauges (values, not counts), by the services that send
 // them. Listed, not guessed from the name: "lost_scans" and "scans" differ by one word.
-constexpr std::array<std::string_view, 37> kNormalCounters = {
+constexpr std::array<std::string_view, 39> kNormalCounters = {
     // lms100_driver: link and stamping
     "connects", "scans", "scans_in_bursts", "held_scans", "held_scan_max_delay_us",
     // lms100_emulator and robot_sim's emulated sensor
@@ -25,7 +25,8 @@ constexpr std::array<std::string_view, 37> kNormalCounters = {
     // solver's; odometry calibration; mean squared Mahalanobis distance of accepted detections)
     "fixes_accepted", "initialisations", "fixes_deferred", "scans_accepted", "fixes_left_to_detections",
     "detection_nis_milli", "odometry_error_xx_ppm", "odometry_error_yy_ppm", "odometry_error_turn_ppm",
-    "odometry_error_turn_per_x_ppm", "noise_inflation_milli",
+    "odometry_error_turn_per_x_ppm", "noise_inflation_milli", "scan_time_offset_us",
+    "scan_time_offset_sigma_us",
     // web_console: its clients (a gauge), frames sent, scans decimated away, commands accepted
     "clients", "frames_sent", "scans_skipped", "requests_accepted", "http_requests"};
 
