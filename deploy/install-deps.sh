@@ -14,6 +14,9 @@ packages=(
   clang-format git
   libceres-dev
   libboost-dev
+  # The console's browser test (headless Chromium through chromedriver) and load_test.sh's
+  # WebSocket readers (--console-clients).
+  chromium chromium-driver python3-selenium python3-websocket
 )
 
 # Every refloc program's LCM URL asks for this UDP receive buffer (recv_buf_size, common/lcm_url.hpp:

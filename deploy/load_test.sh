@@ -18,6 +18,7 @@
 #
 #   deploy/load_test.sh [--duration S] [--build-dir DIR] [--json FILE] [--run-dir DIR]
 #                       [--max-p99-ms MS] [--warmup-timeout S] [--mission FILE]
+#                       [--console-clients N]
 #
 #   --duration S        measured time [600]
 #   --build-dir DIR     build with bin/ (relative to the repo root) [build]
@@ -26,6 +27,9 @@
 #   --max-p99-ms MS     scan-to-pose p99 limit; 0 = report only (sanitizer builds) [5]
 #   --warmup-timeout S  wait this long for the first LASER_POSE [60]
 #   --mission FILE      mission repeated to keep the robot driving [deploy/config/mission_demo.json]
+#   --console-clients N N WebSocket readers on web_console throughout (deploy/console_clients.py,
+#                       python3-websocket), one of them stalling after 5 s; their summary is
+#                       console_clients.json in the run dir [0]
 # Environment: REFLOC_CONFIG_DIR (service configs, as for deploy/refloc), LCM_DEFAULT_URL.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -38,6 +42,7 @@ run_dir=""
 max_p99_ms=5
 warmup_timeout=60
 mission=deploy/config/mission_demo.json
+console_clients=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --duration) duration="$2"; shift 2 ;;
@@ -47,17 +52,20 @@ while [ $# -gt 0 ]; do
     --max-p99-ms) max_p99_ms="$2"; shift 2 ;;
     --warmup-timeout) warmup_timeout="$2"; shift 2 ;;
     --mission) mission="$2"; shift 2 ;;
-    -h|--help) sed -n '2,29p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --console-clients) console_clients="$2"; shift 2 ;;
+    -h|--help) sed -n '2,33p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "load_test: unknown argument '$1' (see --help)" >&2; exit 64 ;;
   esac
 done
 [[ "$duration" =~ ^[0-9]+$ && "$duration" -ge 1 ]] || { echo "load_test: --duration must be whole seconds >= 1" >&2; exit 64; }
+[[ "$console_clients" =~ ^[0-9]+$ && "$console_clients" -le 256 ]] ||
+  { echo "load_test: --console-clients must be a whole number 0..256" >&2; exit 64; }
 [ -z "$json" ] || json="$(realpath -m "$json")"
 
 # LCM traffic of the test must not meet anything else: private network namespace.
 if [ "${REFLOC_IN_NETNS:-}" != "1" ]; then
   args=(--duration "$duration" --build-dir "$build_dir" --max-p99-ms "$max_p99_ms"
-        --warmup-timeout "$warmup_timeout" --mission "$mission")
+        --warmup-timeout "$warmup_timeout" --mission "$mission" --console-clients "$console_clients")
   [ -n "$json" ] && args+=(--json "$json")
   [ -n "$run_dir" ] && args+=(--run-dir "$run_dir")
   exec "$root/tests/tools/run_in_netns.sh" "$0" "${args[@]}"
@@ -81,8 +89,10 @@ export REFLOC_ARGS_lms100_driver="${REFLOC_ARGS_lms100_driver:---host 127.0.0.1}
 mapfile -t services < <(deploy/refloc list --services)  # deploy/services.list
 programs=("${services[@]}" lcm-logger)
 mission_loop_pid=""
+clients_pid=""
 
 cleanup() {
+  [ -z "$clients_pid" ] || kill "$clients_pid" 2>/dev/null || true
   if [ -n "$mission_loop_pid" ]; then
     kill -- "$mission_loop_pid" 2>/dev/null || true
     wait "$mission_loop_pid" 2>/dev/null || true
@@ -165,6 +175,16 @@ for p in "${programs[@]}"; do
   cpu0[$p]="$(cpu_of "${pid[$p]}" || echo 0)"
   cpu_banked[$p]=0; cpu_ticks[$p]=0; rss_sum[$p]=0; rss_end[$p]=0; hwm[$p]=0; samples[$p]=0; pid_changes[$p]=0
 done
+if [ "$console_clients" -gt 0 ]; then
+  # The console's address from its config (deploy/config/web_console.json unless overridden).
+  console_config="${REFLOC_CONFIG_DIR:-deploy/config}/web_console.json"
+  [ -f "$console_config" ] || console_config=deploy/config/web_console.json
+  console_port="$(grep -v '^ *//' "$console_config" | jq -r '.server.port // 8080')"
+  /usr/bin/python3 deploy/console_clients.py --url "ws://127.0.0.1:$console_port/" --clients "$console_clients" \
+    --duration "$duration" --stall-one --json "$run_dir/console_clients.json" >"$run_dir/console_clients.log" 2>&1 &
+  clients_pid=$!
+  echo "== $console_clients WebSocket readers on web_console (one stops reading after 5 s)"
+fi
 echo "== measuring for ${duration} s (robot driving $mission in a loop)"
 
 sample() {
@@ -194,6 +214,12 @@ while [ $SECONDS -lt $end ]; do
   if [ $left -gt 0 ]; then sleep "$((left < 5 ? left : 5))"; fi
 done
 sample
+if [ -n "$clients_pid" ]; then
+  wait "$clients_pid" 2>/dev/null || true
+  clients_pid=""
+  jq -c '{clients, frames_per_s_mean, kbytes_per_s_mean, ends: [.per_client[].end] | group_by(.) | map({(.[0]): length}) | add}' \
+    "$run_dir/console_clients.json" 2>/dev/null || echo "load_test: no console_clients.json (see console_clients.log)" >&2
+fi
 deploy/refloc stop lcm-logger >/dev/null
 t1=$(date +%s.%N)
 kill -- "$mission_loop_pid" 2>/dev/null || true

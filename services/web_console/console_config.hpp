@@ -36,7 +36,7 @@ struct ConsoleModelConfig {
 struct ConsoleServerConfig {
   std::string listen_address = "127.0.0.1";
   uint16_t port = 8080;
-  size_t max_clients = 8;                    ///< WebSocket clients at once; more are refused [count]
+  size_t max_clients = 16;                    ///< WebSocket clients at once; more are refused [count]
   size_t client_queue_frames = 64;           ///< frames waiting per client; beyond it dropped [count]
   double stalled_client_timeout_s = 5.0;     ///< a client whose write is pending this long is dropped [s]
   size_t max_message_bytes = 4096;           ///< a client message larger is refused [bytes]

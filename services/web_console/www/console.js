@@ -12,6 +12,9 @@ const state = {
 };
 
 const mapView = new MapView(document.getElementById('map'), state, sendGoal);
+// For diagnostics from the browser's console, and for the browser test (tests/web_console), which
+// computes the map point of the pixel it clicks with the view's own transform.
+window.refloc = { state, mapView };
 const $ = (id) => document.getElementById(id);
 let socket = null;
 let redrawPending = false;

@@ -1,0 +1,169 @@
+#!/usr/bin/python3
+"""The console page in a real headless Chromium (Debian's chromium + chromium-driver, driven by
+Debian's python3-selenium) against a running simulated stack whose web_console has control on.
+
+  browser_check.py page --url URL --map MAP --token T --screenshot PNG --out JSON
+      loads the page; waits for the legend's reflector count (the map file's) and an OK POSE line,
+      both within 2 s of the page load; clicks "Set goal" and a map point with no token (refused by
+      the service), then with the token; saves a screenshot; writes what it clicked to JSON.
+  browser_check.py verify --clicks JSON --log-jsonl FILE
+      checks the stack's LCM log (refloc-log --jsonl of NAV_GOAL and HEARTBEAT): exactly one
+      NAV_GOAL, at the second click's map point within 1 cm, and web_console's HEARTBEAT counting
+      the token refusal.
+Exit 0 pass, 1 fail (every failure printed), 77 skip (no Chromium, chromedriver or selenium).
+"""
+import argparse
+import json
+import sys
+import time
+
+SKIP = 77
+
+
+def fail(failures, what):
+    failures.append(what)
+    print(f"FAIL: {what}", file=sys.stderr)
+
+
+def page(args):
+    try:
+        from selenium import webdriver
+        from selenium.webdriver.chrome.service import Service
+        from selenium.webdriver.common.action_chains import ActionChains
+        from selenium.webdriver.common.actions.action_builder import ActionBuilder
+        from selenium.webdriver.common.by import By
+    except ImportError as e:
+        print(f"SKIP: python3-selenium missing ({e})", file=sys.stderr)
+        return SKIP
+    import shutil
+    if not shutil.which("chromium") or not shutil.which("chromedriver"):
+        print("SKIP: chromium or chromedriver (Debian chromium-driver) missing", file=sys.stderr)
+        return SKIP
+    with open(args.map) as f:
+        reflector_count = len(json.load(f)["reflectors"])
+
+    options = webdriver.ChromeOptions()
+    options.binary_location = shutil.which("chromium")
+    for a in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+              "--window-size=1400,900", "--hide-scrollbars"):
+        options.add_argument(a)
+    driver = webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=options)
+    failures = []
+    clicks = {}
+    try:
+        loaded = time.monotonic()
+        driver.get(args.url)
+        legend_s = pose_s = None
+        while time.monotonic() - loaded < 10.0 and (legend_s is None or pose_s is None):
+            legend = driver.find_element(By.ID, "map-legend").text
+            pose_line = driver.find_element(By.ID, "pose-line").text
+            if legend_s is None and f"{reflector_count} reflectors" in legend:
+                legend_s = time.monotonic() - loaded
+            if pose_s is None and pose_line.startswith("POSE OK"):
+                pose_s = time.monotonic() - loaded
+            time.sleep(0.05)
+        print(f"page loaded: legend shows {reflector_count} reflectors after {legend_s} s, "
+              f"an OK POSE after {pose_s} s")
+        if legend_s is None or legend_s > 2.0:
+            fail(failures, f"the map's {reflector_count} reflectors not in the legend within 2 s ({legend_s})")
+        if pose_s is None or pose_s > 2.0:
+            fail(failures, f"no OK POSE line within 2 s ({pose_s}): "
+                 f"{driver.find_element(By.ID, 'pose-line').text!r}")
+        if not driver.find_element(By.ID, "controls").is_displayed():
+            fail(failures, "controls hidden although the service has control enabled")
+
+        def click_goal(px_from_left, py_from_top, token):
+            """Arms "Set goal", clicks the map canvas at an integer viewport pixel; returns the map
+            point the page computes for that pixel (its own transform, window.refloc.mapView)."""
+            token_input = driver.find_element(By.ID, "token")
+            token_input.clear()
+            if token:
+                token_input.send_keys(token)
+            driver.find_element(By.ID, "goal-mode").click()
+            rect = driver.execute_script(
+                "const r = document.getElementById('map').getBoundingClientRect();"
+                "return [r.left, r.top, r.width, r.height];")
+            x = int(round(rect[0] + px_from_left * rect[2]))
+            y = int(round(rect[1] + py_from_top * rect[3]))
+            expected = driver.execute_script(
+                "const r = document.getElementById('map').getBoundingClientRect();"
+                "return window.refloc.mapView.toMap(arguments[0] - r.left, arguments[1] - r.top);", x, y)
+            actions = ActionBuilder(driver)
+            actions.pointer_action.move_to_location(x, y).click()
+            actions.perform()
+            ActionChains(driver).reset_actions()
+            return {"viewport_px": [x, y], "map_m": expected}
+
+        clicks["without_token"] = click_goal(0.40, 0.55, "")
+        time.sleep(0.5)
+        clicks["with_token"] = click_goal(0.55, 0.45, args.token)
+        time.sleep(1.0)  # the goal drawn, the navigator under way
+        driver.save_screenshot(args.screenshot)
+        print(f"screenshot: {args.screenshot}")
+        print(f"clicked: {json.dumps(clicks)}")
+    finally:
+        driver.quit()
+    with open(args.out, "w") as f:
+        json.dump({"clicks": clicks, "failures": failures}, f)
+    return 1 if failures else 0
+
+
+def heartbeat_counter(msg, name):
+    for key, value in zip(msg.get("counter_names", []), msg.get("counter_values", [])):
+        if key == name:
+            return value
+    return None
+
+
+def verify(args):
+    with open(args.clicks) as f:
+        run = json.load(f)
+    failures = list(run["failures"])
+    goals, refusals = [], None
+    with open(args.log_jsonl) as f:
+        for line in f:
+            d = json.loads(line)
+            msg = d["msg"]
+            if d["channel"] == "NAV_GOAL":
+                goals.append(msg)
+            elif d["channel"] == "HEARTBEAT" and msg.get("service") == "web_console":
+                value = heartbeat_counter(msg, "requests_refused_bad_token")
+                if value is not None:
+                    refusals = value
+    print(f"NAV_GOAL messages: {len(goals)}; web_console requests_refused_bad_token: {refusals}")
+    if refusals is None or refusals < 1:
+        fail(failures, f"the goal without the token was not counted as refused ({refusals})")
+    if len(goals) != 1:
+        fail(failures, f"{len(goals)} NAV_GOAL messages, expected exactly 1 (the one with the token)")
+    if goals:
+        g = goals[-1]
+        want = run["clicks"]["with_token"]["map_m"]
+        got = [g["x"][0], g["y"][0]]
+        error_m = ((got[0] - want[0]) ** 2 + (got[1] - want[1]) ** 2) ** 0.5
+        print(f"NAV_GOAL at ({got[0]:.4f}, {got[1]:.4f}) m, clicked ({want[0]:.4f}, {want[1]:.4f}) m: "
+              f"{1000 * error_m:.2f} mm apart")
+        if error_m > 0.01:
+            fail(failures, f"NAV_GOAL {1000 * error_m:.1f} mm from the clicked point (limit 10 mm)")
+    for f_ in failures:
+        print(f"FAIL: {f_}", file=sys.stderr)
+    return 1 if failures else 0
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("page")
+    p.add_argument("--url", required=True)
+    p.add_argument("--map", required=True)
+    p.add_argument("--token", required=True)
+    p.add_argument("--screenshot", required=True)
+    p.add_argument("--out", required=True)
+    v = sub.add_parser("verify")
+    v.add_argument("--clicks", required=True)
+    v.add_argument("--log-jsonl", required=True)
+    args = parser.parse_args()
+    return page(args) if args.command == "page" else verify(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
