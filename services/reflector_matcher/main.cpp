@@ -1,6 +1,4 @@
-// reflector_matcher: REFLECTORS + POSE prior -> REFLECTOR_MATCHES, one output per scan; with
-// LMS100_SCAN (line of sight) -> MAP_HEALTH once a second. Which prior, the match, the map
-// evidence and the state are MatcherNode's; this file converts.
+// reflector_matcher: REFLECTORS (+ POSE, INITIAL_POSE, LMS100_SCAN) -> REFLECTOR_MATCHES, MAP_HEALTH.
 
 #include "reflector_matcher/map_health_messages.hpp"
 #include "reflector_matcher/matcher_config_file.hpp"
@@ -30,7 +28,6 @@ void log_startup(StartupEvent event, double window_s) {
   if (event == StartupEvent::kGaveUp)
     spdlog::warn("no global relocalization within {:.1f} s of start: tracking from the POSE prior", window_s);
 }
-
 // MAP_HEALTH once a period, its counters in the heartbeat, each state change logged.
 void wire_map_health(ServiceRuntime& runtime, MatcherNode& node, const MapHealthConfig& config) {
   MapHealthMonitor* monitor = node.map_health();
@@ -67,6 +64,9 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   reflector_matches_t out;
   runtime.subscribe<pose2d_t>(config.prior_channel, [&](const pose2d_t& msg) {
     report_events(runtime, node.on_pose(fused_pose_from_message(msg), now_utime()));
+  });
+  runtime.subscribe<pose2d_t>(config.initial_pose_channel, [&](const pose2d_t& msg) {
+    report_events(runtime, node.on_initial_pose(fused_pose_from_message(msg)));
   });
   runtime.subscribe<reflector_detections_t>(config.input_channel, [&](const reflector_detections_t& msg) {
     detections_from_message(msg, detections);

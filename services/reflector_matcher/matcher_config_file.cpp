@@ -29,6 +29,10 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
       {"/prior_channel", "",
        "LCM channel of the fused robot pose (pose2d_t): the tracking prior when its status is OK"},
       s.prior_channel);
+  s.initial_pose_channel = config.string(
+      {"/initial_pose_channel", "",
+       "LCM channel of a user's \"the robot is here\" (pose2d_t, e.g. from web_console): a prior, verified"},
+      s.initial_pose_channel);
   s.output_channel = config.string(
       {"/output_channel", "",
        "LCM channel the matches are published on (reflector_matches_t), one message per accepted scan"},
@@ -54,6 +58,11 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
                                          "after start, ignore priors until a global relocalization is OK, "
                                          "for at most this long (then trust POSE again); 0: track at once"},
                                         p.relocalize_on_start, 0.0, 60.0);
+  p.initial_pose_hold =
+      config.number({"/initial_pose_hold_s", "s",
+                     "an INITIAL_POSE is the prior for this long from the next scan; once a "
+                     "scan matches from it, the own poses are preferred to POSE for as long"},
+                    p.initial_pose_hold, 0.1, 60.0);
 
   m.sensor.min_range =
       config.number({"/sensor/min_range_m", "m",

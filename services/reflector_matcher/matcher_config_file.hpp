@@ -17,6 +17,7 @@ struct MatcherServiceConfig {
   std::string map_file;  ///< resolved against the config file's folder when relative
   std::string input_channel = "REFLECTORS";
   std::string prior_channel = "POSE";
+  std::string initial_pose_channel = "INITIAL_POSE";
   std::string output_channel = "REFLECTOR_MATCHES";
   PriorSelectionConfig prior;  ///< the file's top-level prior keys
   MapHealthConfig map_health;  ///< "map_health": evidence about the map, MAP_HEALTH

@@ -3,6 +3,9 @@
 #include "common/reflector_detection_check.hpp"
 #include "reflector_matcher/fused_pose_check.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <utility>
 
 namespace refloc {
@@ -37,6 +40,24 @@ const std::vector<NodeEvent>& MatcherNode::on_pose(const FusedPose& pose, int64_
   return pose_events_;
 }
 
+const std::vector<NodeEvent>& MatcherNode::on_initial_pose(const FusedPose& pose) {
+  pose_events_.clear();
+  FusedPose user = pose;
+  user.ok = true;  // a user's pose carries no fusion status; check_fused_pose checks an OK one fully
+  if (const InputFault fault = check_fused_pose(user)) {
+    pose_events_.push_back({"initial_poses_rejected", NodeEvent::Level::kWarn,
+                            fmt::format("INITIAL_POSE refused ({}): {}", fault.reason, fault.detail)});
+    return pose_events_;
+  }
+  selector_.on_initial_pose(user);
+  pose_events_.push_back(
+      {"initial_poses_received", NodeEvent::Level::kInfo,
+       fmt::format("INITIAL_POSE ({:.3f}, {:.3f}) m, {:.1f} deg: the prior for the next scans, "
+                   "confirmed only if they match from it",
+                   user.map_T_robot.x, user.map_T_robot.y, user.map_T_robot.theta * 180.0 / M_PI)});
+  return pose_events_;
+}
+
 const MatcherOutput& MatcherNode::on_detections(int64_t utime, int64_t scan_counter,
                                                 const std::vector<ReflectorDetection>& detections,
                                                 int64_t host_utime) {
@@ -62,6 +83,19 @@ const MatcherOutput& MatcherNode::on_detections(int64_t utime, int64_t scan_coun
   output_.prior_source = choice.source;
   matcher_.match(detections, choice.prior ? &*choice.prior : nullptr, output_.result);
   output_.startup_event = selector_.on_result(utime, output_.result);
+  switch (selector_.take_initial_pose_event()) {
+    case InitialPoseEvent::kConfirmed:
+      output_.events.push_back({"initial_poses_confirmed", NodeEvent::Level::kInfo,
+                                "INITIAL_POSE confirmed: a scan matched from it; tracking on from there"});
+      break;
+    case InitialPoseEvent::kExpired:
+      output_.events.push_back({"initial_poses_expired", NodeEvent::Level::kWarn,
+                                "INITIAL_POSE expired: no scan matched from it (another place, or too few "
+                                "reflectors in view); relocalizing as before"});
+      break;
+    case InitialPoseEvent::kNone:
+      break;
+  }
   if (map_health_)
     map_health_->on_match(utime, detections, output_.result, choice.source == PriorSource::kFusedPose);
   return output_;

@@ -23,7 +23,7 @@ struct MatcherOutput {
   /// false: the detections were rejected (events say why); nothing to publish, and result
   /// is still the last accepted scan's.
   bool accepted = false;
-  std::vector<NodeEvent> events;  ///< rejection, clock re-anchor, counter reset, gap
+  std::vector<NodeEvent> events;  ///< rejection, clock re-anchor, counter reset, gap, INITIAL_POSE outcome
   int64_t missing_scans = -1;     ///< scan counters missing before this scan; -1: not known (offline)
   /// Detections come but none was usable for over a second: DEGRADED with starved_detail.
   bool starved = false;
@@ -62,6 +62,9 @@ class MatcherNode {
   /// One POSE at host wall-clock time host_utime [us]; the events of a rejected one.
   /// Valid until the next call.
   const std::vector<NodeEvent>& on_pose(const FusedPose& pose, int64_t host_utime);
+  /// A user's INITIAL_POSE (checked like a POSE, but not against the POSE stream's stamps: it is
+  /// the user's "now"); the events say it was taken, or why not.
+  const std::vector<NodeEvent>& on_initial_pose(const FusedPose& pose);
   /// One scan's detections with its scan counter, at host_utime [us]; the reference stays
   /// valid until the next call.
   const MatcherOutput& on_detections(int64_t utime, int64_t scan_counter,

@@ -22,24 +22,52 @@ PriorSelector::PriorSelector(const PriorSelectionConfig& config, const Pose2& ro
 PriorChoice PriorSelector::select(int64_t scan_utime) {
   startup_was_done_ = startup_.done();
   PriorChoice choice;
-  if (!startup_.prior_allowed(scan_utime)) {
+  const auto hold_us = static_cast<int64_t>(config_.initial_pose_hold * 1e6);
+  if (initial_) {
+    if (!initial_first_scan_utime_) initial_first_scan_utime_ = scan_utime;
+    if (scan_utime - *initial_first_scan_utime_ <= hold_us) {
+      choice.source = PriorSource::kInitialPose;
+      choice.prior = prior_from_robot_pose(*initial_, robot_T_laser_);
+      last_source_ = choice.source;
+      return choice;
+    }
+    initial_.reset();
+    initial_event_ = InitialPoseEvent::kExpired;
+  }
+  const bool own_fresh = last_own_ok_ && std::llabs(scan_utime - last_own_ok_->first) <= max_age_us_;
+  if (scan_utime <= own_preferred_until_utime_ && own_fresh) {
+    const double sxy2 = config_.own_sigma_xy * config_.own_sigma_xy;
+    const double st2 = config_.own_sigma_theta * config_.own_sigma_theta;
+    choice.source = PriorSource::kOwnPose;
+    choice.prior = PosePrior{last_own_ok_->second, Eigen::Vector3d(sxy2, sxy2, st2).asDiagonal()};
+  } else if (!startup_.prior_allowed(scan_utime)) {
     choice.source = PriorSource::kStartupWindow;
   } else if (last_pose_ && last_pose_->ok && std::llabs(scan_utime - last_pose_->utime) <= max_age_us_) {
     choice.source = PriorSource::kFusedPose;
     choice.prior = prior_from_robot_pose(*last_pose_, robot_T_laser_);
-  } else if (config_.use_own_pose && last_own_ok_ &&
-             std::llabs(scan_utime - last_own_ok_->first) <= max_age_us_) {
+  } else if (config_.use_own_pose && own_fresh) {
     const double sxy2 = config_.own_sigma_xy * config_.own_sigma_xy;
     const double st2 = config_.own_sigma_theta * config_.own_sigma_theta;
     choice.source = PriorSource::kOwnPose;
     choice.prior = PosePrior{last_own_ok_->second, Eigen::Vector3d(sxy2, sxy2, st2).asDiagonal()};
   }
+  last_source_ = choice.source;
   return choice;
 }
 
 StartupEvent PriorSelector::on_result(int64_t scan_utime, const MatchResult& result) {
   startup_.on_result(result.status, result.mode);
   if (result.status == MatchStatus::kOk) last_own_ok_ = std::make_pair(scan_utime, result.map_T_laser);
+  if (last_source_ == PriorSource::kInitialPose && result.status == MatchStatus::kOk &&
+      result.mode == MatchMode::kTracking) {
+    initial_.reset();
+    initial_event_ = InitialPoseEvent::kConfirmed;
+    own_preferred_until_utime_ = scan_utime + static_cast<int64_t>(config_.initial_pose_hold * 1e6);
+    if (!startup_.done()) {
+      startup_.confirm_by_user_pose();
+      startup_was_done_ = true;  // the user's pose ended the window: no "relocalized" event
+    }
+  }
   if (!startup_was_done_ && startup_.relocalized()) return StartupEvent::kRelocalized;
   if (!startup_was_done_ && startup_.gave_up()) return StartupEvent::kGaveUp;
   return StartupEvent::kNone;

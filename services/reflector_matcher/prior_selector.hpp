@@ -5,6 +5,12 @@
 //     max_age), map_T_robot composed with the mount and its covariance propagated through it;
 //  3. else the matcher's own last OK map_T_laser when fresh, with the configured sigmas;
 //  4. else none (global relocalization).
+// Before all of these, an INITIAL_POSE (a user's "the robot is here", e.g. from the web
+// console): for initial_pose_hold_s of scans it is the prior, with its own covariance. Its
+// matches are verified against the whole scan like any prior's, so a wrong one is never
+// confirmed: it expires. Once a scan matches OK from it, the matcher tracks from its own poses
+// for initial_pose_hold_s more, so that a fused POSE still on the old (wrong) pose cannot pull it
+// back while pose_fusion refuses the new matches and restarts from the new fixes.
 
 #include "reflector_matcher/match_result.hpp"
 #include "reflector_matcher/startup_relocalization.hpp"
@@ -28,6 +34,9 @@ struct PriorSelectionConfig {
   /// relocalize_on_start_s: after start, ignore priors until a global relocalization is OK,
   /// for at most this long (StartupRelocalization); 0 = track from POSE at once [s].
   double relocalize_on_start = 2.0;
+  /// initial_pose_hold_s: an INITIAL_POSE is the prior for this long from the first scan after
+  /// it; after its first OK scan the own poses are preferred to POSE for as long [s].
+  double initial_pose_hold = 3.0;
 };
 
 /// The fused robot pose (POSE) as the matcher receives it.
@@ -43,7 +52,9 @@ struct FusedPose {
 /// becomes zero, so the matcher's floors take over.
 PosePrior prior_from_robot_pose(const FusedPose& pose, const Pose2& robot_T_laser);
 
-enum class PriorSource { kNone, kStartupWindow, kFusedPose, kOwnPose };
+enum class PriorSource { kNone, kStartupWindow, kFusedPose, kOwnPose, kInitialPose };
+/// What became of an INITIAL_POSE, said once.
+enum class InitialPoseEvent { kNone, kConfirmed, kExpired };
 enum class StartupEvent { kNone, kRelocalized, kGaveUp };
 
 struct PriorChoice {
@@ -56,10 +67,21 @@ class PriorSelector {
   PriorSelector(const PriorSelectionConfig& config, const Pose2& robot_T_laser);
 
   void on_pose(const FusedPose& pose) { last_pose_ = pose; }
+  /// A user's pose (status ignored; its covariance taken as given, the matcher's floors apply).
+  void on_initial_pose(const FusedPose& pose) {
+    initial_ = pose;
+    initial_first_scan_utime_.reset();
+  }
   /// The prior for the scan at scan_utime [us]; call on_result with its match next.
   PriorChoice select(int64_t scan_utime);
   /// The scan's result: ends the startup window, remembers an OK pose.
   StartupEvent on_result(int64_t scan_utime, const MatchResult& result);
+  /// Set by select() (expired) or on_result() (confirmed); kNone after it was read.
+  InitialPoseEvent take_initial_pose_event() {
+    const InitialPoseEvent e = initial_event_;
+    initial_event_ = InitialPoseEvent::kNone;
+    return e;
+  }
 
  private:
   PriorSelectionConfig config_;
@@ -69,6 +91,11 @@ class PriorSelector {
   bool startup_was_done_ = false;
   std::optional<FusedPose> last_pose_;
   std::optional<std::pair<int64_t, Pose2>> last_own_ok_;  ///< scan utime, map_T_laser
+  std::optional<FusedPose> initial_;
+  std::optional<int64_t> initial_first_scan_utime_;
+  int64_t own_preferred_until_utime_ = 0;  ///< after a confirmed INITIAL_POSE
+  PriorSource last_source_ = PriorSource::kNone;
+  InitialPoseEvent initial_event_ = InitialPoseEvent::kNone;
 };
 
 }  // namespace refloc

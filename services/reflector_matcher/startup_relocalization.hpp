@@ -32,6 +32,8 @@ class StartupRelocalization {
   /// The window passed without a global OK: the prior is used again.
   bool gave_up() const { return gave_up_; }
   bool done() const { return relocalized_ || gave_up_; }
+  /// A scan matched from a user's INITIAL_POSE: as good as relocalizing on its own.
+  void confirm_by_user_pose() { relocalized_ = true; }
 
  private:
   int64_t window_us_;

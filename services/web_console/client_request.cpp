@@ -36,7 +36,7 @@ RequestVerdict RequestValidator::judge(const std::string& message) const {
   if (j.is_discarded()) return refused("not_json");
   if (!j.is_object() || !j.contains("type") || !j["type"].is_string()) return refused("not_an_object");
   const std::string type = j["type"].get<std::string>();
-  if (type != "goal" && type != "stop") return refused("unknown_type");
+  if (type != "goal" && type != "stop" && type != "initial_pose") return refused("unknown_type");
   if (!control_.enabled) return refused("control_disabled");
   const auto token = j.find("token");
   if (token == j.end() || !token->is_string() || !token_matches(token->get<std::string>()))
@@ -47,7 +47,7 @@ RequestVerdict RequestValidator::judge(const std::string& message) const {
   const auto y = bounded_number(j, "y", kMaxGoalCoordinate_m);
   const auto theta = bounded_number(j, "theta", 2.0 * M_PI);
   if (!x || !y || !theta) return refused("bad_number");
-  command.kind = ConsoleCommand::Kind::kGoal;
+  command.kind = type == "goal" ? ConsoleCommand::Kind::kGoal : ConsoleCommand::Kind::kInitialPose;
   command.x = *x;
   command.y = *y;
   command.theta = *theta;

@@ -3,6 +3,9 @@
 // acts on it. Text JSON objects:
 //   {"type": "goal", "token": "...", "x": 1.5, "y": 2.0, "theta": 0.0}   drive to (x, y) [m], theta [rad]
 //   {"type": "stop", "token": "..."}                                      cancel the goal, stop
+//   {"type": "initial_pose", "token": "...", "x": .., "y": .., "theta": ..}  "the robot is here":
+//                                                                         INITIAL_POSE, a prior the matcher
+//                                                                         verifies
 // Refused (and counted by reason, never acted on): larger than max_message_bytes ("too_large"),
 // not JSON ("not_json"), not an object or without a string "type" ("not_an_object"), a type not
 // listed ("unknown_type"), any command while control is off ("control_disabled"), a missing or
@@ -17,9 +20,9 @@
 namespace refloc {
 
 struct ConsoleCommand {
-  enum class Kind { kGoal, kStop };
+  enum class Kind { kGoal, kStop, kInitialPose };
   Kind kind = Kind::kStop;
-  double x = 0.0;      ///< goal [m], map frame
+  double x = 0.0;      ///< goal or initial pose [m], map frame
   double y = 0.0;      ///< [m]
   double theta = 0.0;  ///< [rad]
 };

@@ -22,6 +22,9 @@ void parse_channels(const JsonConfig& config, ConsoleChannels& c) {
       {"laser_pose", &c.laser_pose, "the solver's laser fixes drawn with their trail (pose2d_t)"},
       {"ground_truth", &c.ground_truth, "the simulator's true pose drawn with its trail (pose2d_t)"},
       {"nav_goal", &c.nav_goal, "goals drawn (nav_goal_t); the page's goals and stops are published here"},
+      {"initial_pose", &c.initial_pose,
+       "the page's \"the robot is here\" is published here (pose2d_t; reflector_matcher's "
+       "initial_pose_channel)"},
       {"nav_status", &c.nav_status, "the navigator's state shown (nav_status_t)"},
       {"heartbeat", &c.heartbeat, "every service's health shown (heartbeat_t)"},
       {"map_health", &c.map_health, "the matcher's map health shown when published (map_health_t)"}};
@@ -105,6 +108,15 @@ WebConsoleConfig parse_web_console_config(const JsonConfig& config, const std::s
                      "secret the page must send with every command (typed in the page); required, at least 8 "
                      "characters, when control is enabled"},
                     c.control.token);
+  c.control.initial_pose_sigma_m = config.number(
+      {"/control/initial_pose_sigma_m", "m",
+       "position std dev published with the page's initial pose (the matcher searches about it)"},
+      c.control.initial_pose_sigma_m, 0.01, 5.0);
+  c.control.initial_pose_sigma_rad =
+      config.number({"/control/initial_pose_sigma_deg", "deg",
+                     "heading std dev published with the page's initial pose"},
+                    c.control.initial_pose_sigma_rad * 180.0 / M_PI, 0.1, 90.0) *
+      M_PI / 180.0;
   if (c.control.enabled && c.control.token.size() < 8)
     config.fail("/control/token", "control is enabled: expected a token of at least 8 characters");
   const std::string map_name = config.string(

@@ -2,6 +2,7 @@
 // web_console's config file (deploy/config/web_console.json). Every key is optional with the
 // default written here; --print-config lists each with its unit and meaning.
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@ struct ConsoleChannels {
   std::string laser_pose = "LASER_POSE";
   std::string ground_truth = "GROUND_TRUTH";
   std::string nav_goal = "NAV_GOAL";
+  std::string initial_pose = "INITIAL_POSE";
   std::string nav_status = "NAV_STATUS";
   std::string heartbeat = "HEARTBEAT";
   std::string map_health = "MAP_HEALTH";
@@ -36,7 +38,7 @@ struct ConsoleModelConfig {
 struct ConsoleServerConfig {
   std::string listen_address = "127.0.0.1";
   uint16_t port = 8080;
-  size_t max_clients = 16;                    ///< WebSocket clients at once; more are refused [count]
+  size_t max_clients = 16;                   ///< WebSocket clients at once; more are refused [count]
   size_t client_queue_frames = 64;           ///< frames waiting per client; beyond it dropped [count]
   double stalled_client_timeout_s = 5.0;     ///< a client whose write is pending this long is dropped [s]
   size_t max_message_bytes = 4096;           ///< a client message larger is refused [bytes]
@@ -47,7 +49,9 @@ struct ConsoleServerConfig {
 /// Whether and how the page may command the robot (RequestValidator).
 struct ConsoleControlConfig {
   bool enabled = false;
-  std::string token;  ///< required (>= 8 characters) when enabled
+  std::string token;                                   ///< required (>= 8 characters) when enabled
+  double initial_pose_sigma_m = 0.2;                   ///< the page's INITIAL_POSE position std dev [m]
+  double initial_pose_sigma_rad = 5.0 * M_PI / 180.0;  ///< its heading std dev [rad]
 };
 
 struct WebConsoleConfig {

@@ -63,8 +63,14 @@ int run(const std::string& lcm_url, const std::string& config_path) {
   server.send(model.console_frame());
   show_all(runtime, model, server, config.channels);
   runtime.add_periodic(0.02, [&] {  // the page's commands, published from the LCM thread
-    for (const ConsoleCommand& command : server.take_commands())
-      runtime.publish(config.channels.nav_goal, to_message(command, now_utime(), now_utime()));
+    for (const ConsoleCommand& command : server.take_commands()) {
+      if (command.kind == ConsoleCommand::Kind::kInitialPose)
+        runtime.publish(config.channels.initial_pose,
+                        initial_pose_message(command, now_utime(), config.control.initial_pose_sigma_m,
+                                             config.control.initial_pose_sigma_rad));
+      else
+        runtime.publish(config.channels.nav_goal, to_message(command, now_utime(), now_utime()));
+    }
   });
   runtime.add_periodic(1.0, [&] {
     for (const ConsoleFrame& frame : model.trail_frames()) server.send(frame);

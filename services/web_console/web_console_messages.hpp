@@ -125,4 +125,19 @@ inline nav_goal_t to_message(const ConsoleCommand& command, int64_t utime, int64
   return goal;
 }
 
+/// The page's "the robot is here": map_T_robot with the configured std devs, status OK (the
+/// matcher takes it as a prior and verifies it; pose_fusion does not read it).
+inline pose2d_t initial_pose_message(const ConsoleCommand& command, int64_t utime, double sigma_m,
+                                     double sigma_rad) {
+  pose2d_t pose{};
+  pose.utime = utime;
+  pose.x = command.x;
+  pose.y = command.y;
+  pose.theta = command.theta;
+  pose.covariance[0] = pose.covariance[4] = sigma_m * sigma_m;
+  pose.covariance[8] = sigma_rad * sigma_rad;
+  pose.status = pose2d_t::STATUS_OK;
+  return pose;
+}
+
 }  // namespace refloc

@@ -112,5 +112,57 @@ TEST(PriorSelector, StartupWindowThatNeverRelocalizesGivesUpOnceAndUsesThePriorA
   EXPECT_EQ(s.on_result(kT0 + 2'040'000, lost), StartupEvent::kNone);
 }
 
+// An INITIAL_POSE (the web console's "Set pose") comes before every other prior, also in the
+// startup window; confirmed by a tracked OK scan, after which the own poses beat a POSE still on
+// the old place for initial_pose_hold_s; unconfirmed, it expires once and the usual order returns.
+TEST(PriorSelector, AnInitialPoseIsThePriorUntilConfirmedThenTheOwnPosesBeatAnOldPose) {
+  PriorSelectionConfig config;  // startup window on (2 s)
+  PriorSelector s(config, kMount);
+  s.on_pose(fused(kT0));  // the fused pose: (5, 3), about to be contradicted
+  FusedPose user;
+  user.map_T_robot = {12.0, 7.0, 0.0};
+  user.covariance = Eigen::Vector3d(0.04, 0.04, 0.0076).asDiagonal();
+  s.on_initial_pose(user);
+  const PriorChoice first = s.select(kT0 + 20'000);
+  ASSERT_EQ(first.source, PriorSource::kInitialPose);
+  ASSERT_TRUE(first.prior);
+  EXPECT_NEAR(first.prior->map_T_laser.x, 12.2, 1e-12);
+  EXPECT_NEAR(first.prior->map_T_laser.y, 7.1, 1e-12);
+  s.on_result(kT0 + 20'000, ok_result(MatchMode::kTracking, {12.2, 7.1, 0.0}));
+  EXPECT_EQ(s.take_initial_pose_event(), InitialPoseEvent::kConfirmed);
+  EXPECT_EQ(s.take_initial_pose_event(), InitialPoseEvent::kNone);  // said once
+  s.on_pose(fused(kT0 + 40'000));                                   // fusion still at (5, 3) with status OK
+  const PriorChoice next = s.select(kT0 + 40'000);
+  EXPECT_EQ(next.source, PriorSource::kOwnPose);
+  EXPECT_NEAR(next.prior->map_T_laser.x, 12.2, 1e-12);
+  // initial_pose_hold_s (3 s) later the fused POSE is the prior again.
+  s.on_result(kT0 + 3'100'000, ok_result(MatchMode::kTracking, {12.2, 7.1, 0.0}));
+  s.on_pose(fused(kT0 + 3'100'000));
+  EXPECT_EQ(s.select(kT0 + 3'100'000).source, PriorSource::kFusedPose);
+}
+
+TEST(PriorSelector, AnInitialPoseNoScanConfirmsExpiresOnceAndTheUsualOrderReturns) {
+  PriorSelector s(no_startup_window(), kMount);
+  FusedPose user;
+  user.map_T_robot = {1.0, 1.0, 0.0};
+  user.covariance = Eigen::Vector3d(0.04, 0.04, 0.0076).asDiagonal();
+  s.on_initial_pose(user);
+  MatchResult lost;
+  lost.status = MatchStatus::kLost;
+  for (int64_t t = kT0; t <= kT0 + 3'000'000; t += 20'000) {
+    ASSERT_EQ(s.select(t).source, PriorSource::kInitialPose) << t - kT0;
+    s.on_result(t, lost);
+    ASSERT_EQ(s.take_initial_pose_event(), InitialPoseEvent::kNone);
+  }
+  s.on_pose(fused(kT0 + 3'020'000));
+  EXPECT_EQ(s.select(kT0 + 3'020'000).source, PriorSource::kFusedPose);
+  EXPECT_EQ(s.take_initial_pose_event(), InitialPoseEvent::kExpired);
+  // A global OK while the initial pose is the prior does not confirm it: only a match from it does.
+  s.on_initial_pose(user);
+  s.select(kT0 + 4'000'000);
+  s.on_result(kT0 + 4'000'000, ok_result(MatchMode::kGlobal, {9.0, 9.0, 0.0}));
+  EXPECT_EQ(s.take_initial_pose_event(), InitialPoseEvent::kNone);
+}
+
 }  // namespace
 }  // namespace refloc

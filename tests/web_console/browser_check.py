@@ -5,11 +5,13 @@ Debian's python3-selenium) against a running simulated stack whose web_console h
   browser_check.py page --url URL --map MAP --token T --screenshot PNG --out JSON
       loads the page; waits for the legend's reflector count (the map file's) and an OK POSE line,
       both within 2 s of the page load; clicks "Set goal" and a map point with no token (refused by
-      the service), then with the token; saves a screenshot; writes what it clicked to JSON.
+      the service), then with the token; Stop; then "Set pose" dragged from the drawn POSE along its
+      heading (the robot is here); saves a screenshot; writes what it clicked to JSON.
   browser_check.py verify --clicks JSON --log-jsonl FILE
-      checks the stack's LCM log (refloc-log --jsonl of NAV_GOAL and HEARTBEAT): exactly one
-      NAV_GOAL, at the second click's map point within 1 cm, and web_console's HEARTBEAT counting
-      the token refusal.
+      checks the stack's LCM log (refloc-log --jsonl of NAV_GOAL, INITIAL_POSE and HEARTBEAT): one
+      NAV_GOAL with a waypoint, at the second click's map point within 1 cm, and one without (Stop);
+      web_console's HEARTBEAT counting the token refusal; one INITIAL_POSE at the dragged point
+      within 1 cm and reflector_matcher confirming it (HEARTBEAT initial_poses_confirmed).
 Exit 0 pass, 1 fail (every failure printed), 77 skip (no Chromium, chromedriver or selenium).
 """
 import argparse
@@ -98,6 +100,27 @@ def page(args):
         time.sleep(0.5)
         clicks["with_token"] = click_goal(0.55, 0.45, args.token)
         time.sleep(1.0)  # the goal drawn, the navigator under way
+        driver.find_element(By.ID, "stop").click()
+        time.sleep(1.5)  # standing still, so that the pose given below is where the robot stays
+
+        # "Set pose": press on the drawn POSE, drag 60 px along its heading, release.
+        driver.find_element(By.ID, "pose-mode").click()
+        start_end = driver.execute_script(
+            "const v = window.refloc.mapView, p = window.refloc.state.poses.POSE;"
+            "const r = document.getElementById('map').getBoundingClientRect();"
+            "const [sx, sy] = v.toScreen(p.x, p.y);"
+            "return [Math.round(r.left + sx), Math.round(r.top + sy),"
+            "        Math.round(r.left + sx + 60 * Math.cos(p.theta)), Math.round(r.top + sy - 60 * Math.sin(p.theta)),"
+            "        p.x, p.y, p.theta];")
+        x0, y0, x1, y1 = start_end[:4]
+        expected = driver.execute_script(
+            "const r = document.getElementById('map').getBoundingClientRect();"
+            "return window.refloc.mapView.toMap(arguments[0] - r.left, arguments[1] - r.top);", x0, y0)
+        actions = ActionBuilder(driver)
+        actions.pointer_action.move_to_location(x0, y0).pointer_down().move_to_location(x1, y1).pointer_up()
+        actions.perform()
+        clicks["initial_pose"] = {"viewport_px": [x0, y0], "map_m": expected, "pose_then": start_end[4:]}
+        time.sleep(1.0)
         driver.save_screenshot(args.screenshot)
         print(f"screenshot: {args.screenshot}")
         print(f"clicked: {json.dumps(clicks)}")
@@ -119,22 +142,46 @@ def verify(args):
     with open(args.clicks) as f:
         run = json.load(f)
     failures = list(run["failures"])
-    goals, refusals = [], None
+    goals, initial_poses, refusals, confirmed = [], [], None, None
     with open(args.log_jsonl) as f:
         for line in f:
             d = json.loads(line)
             msg = d["msg"]
             if d["channel"] == "NAV_GOAL":
                 goals.append(msg)
+            elif d["channel"] == "INITIAL_POSE":
+                initial_poses.append(msg)
+            elif d["channel"] == "HEARTBEAT" and msg.get("service") == "reflector_matcher":
+                value = heartbeat_counter(msg, "initial_poses_confirmed")
+                if value is not None:
+                    confirmed = value
             elif d["channel"] == "HEARTBEAT" and msg.get("service") == "web_console":
                 value = heartbeat_counter(msg, "requests_refused_bad_token")
                 if value is not None:
                     refusals = value
-    print(f"NAV_GOAL messages: {len(goals)}; web_console requests_refused_bad_token: {refusals}")
+    stops = [g for g in goals if g["nwaypoints"] == 0]
+    goals = [g for g in goals if g["nwaypoints"] > 0]
+    print(f"NAV_GOAL messages: {len(goals)} goals, {len(stops)} stops; web_console requests_refused_bad_token: "
+          f"{refusals}")
     if refusals is None or refusals < 1:
         fail(failures, f"the goal without the token was not counted as refused ({refusals})")
     if len(goals) != 1:
-        fail(failures, f"{len(goals)} NAV_GOAL messages, expected exactly 1 (the one with the token)")
+        fail(failures, f"{len(goals)} NAV_GOAL goals, expected exactly 1 (the one with the token)")
+    if len(stops) != 1:
+        fail(failures, f"{len(stops)} NAV_GOAL stops, expected exactly 1")
+    if len(initial_poses) != 1:
+        fail(failures, f"{len(initial_poses)} INITIAL_POSE messages, expected exactly 1")
+    else:
+        p = initial_poses[0]
+        want = run["clicks"]["initial_pose"]["map_m"]
+        error_m = ((p["x"] - want[0]) ** 2 + (p["y"] - want[1]) ** 2) ** 0.5
+        print(f"INITIAL_POSE at ({p['x']:.4f}, {p['y']:.4f}) m, {p['theta']:.3f} rad, dragged from "
+              f"({want[0]:.4f}, {want[1]:.4f}) m: {1000 * error_m:.2f} mm apart; reflector_matcher "
+              f"initial_poses_confirmed {confirmed}")
+        if error_m > 0.01:
+            fail(failures, f"INITIAL_POSE {1000 * error_m:.1f} mm from the dragged point (limit 10 mm)")
+        if not confirmed:
+            fail(failures, f"reflector_matcher did not confirm the initial pose ({confirmed})")
     if goals:
         g = goals[-1]
         want = run["clicks"]["with_token"]["map_m"]

@@ -33,6 +33,21 @@ TEST(RequestValidator, AGoalWithTheTokenIsAcceptedWithItsCoordinates) {
   EXPECT_EQ(stop.command->kind, ConsoleCommand::Kind::kStop);
 }
 
+TEST(RequestValidator, AnInitialPoseIsACommandLikeAGoalWithTheSameChecks) {
+  const RequestVerdict verdict = validator(true).judge(
+      R"({"type":"initial_pose","token":"s3cret-token","x":12.0,"y":7.0,"theta":-1.0})");
+  ASSERT_TRUE(verdict.command);
+  EXPECT_EQ(verdict.command->kind, ConsoleCommand::Kind::kInitialPose);
+  EXPECT_DOUBLE_EQ(verdict.command->x, 12.0);
+  EXPECT_DOUBLE_EQ(verdict.command->theta, -1.0);
+  EXPECT_EQ(refusal(validator(true), R"({"type":"initial_pose","x":1,"y":2,"theta":0})"), "bad_token");
+  EXPECT_EQ(
+      refusal(validator(false), R"({"type":"initial_pose","token":"s3cret-token","x":1,"y":2,"theta":0})"),
+      "control_disabled");
+  EXPECT_EQ(refusal(validator(true), R"({"type":"initial_pose","token":"s3cret-token","x":1,"y":2})"),
+            "bad_number");
+}
+
 TEST(RequestValidator, EveryBadMessageIsRefusedWithItsReason) {
   const RequestValidator on = validator(true);
   EXPECT_EQ(refusal(on, std::string(257, ' ')), "too_large");

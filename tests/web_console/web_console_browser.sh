@@ -58,7 +58,7 @@ set -e
 [ "$page_rc" -eq 77 ] && exit 77
 sleep 1.5  # the HEARTBEAT after the refusal (every 0.5 s) and the NAV_GOAL reach the logger
 "$refloc" stop >/dev/null
-"$build/bin/refloc-log" "$tmp/logs/refloc.0" -c NAV_GOAL -c HEARTBEAT --jsonl "$tmp/log.jsonl" >/dev/null
+"$build/bin/refloc-log" "$tmp/logs/refloc.0" -c NAV_GOAL -c INITIAL_POSE -c HEARTBEAT --jsonl "$tmp/log.jsonl" >/dev/null
 /usr/bin/python3 "$repo/tests/web_console/browser_check.py" verify --clicks "$tmp/clicks.json" \
   --log-jsonl "$tmp/log.jsonl" | tee -a "$artifacts/web_console_browser.txt"
 verify_rc=${PIPESTATUS[0]}

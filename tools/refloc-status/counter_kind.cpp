@@ -8,7 +8,7 @@ namespace {
 
 // Counters of normal operation and gauges (values, not counts), by the services that send
 // them. Listed, not guessed from the name: "lost_scans" and "scans" differ by one word.
-constexpr std::array<std::string_view, 39> kNormalCounters = {
+constexpr std::array<std::string_view, 41> kNormalCounters = {
     // lms100_driver: link and stamping
     "connects", "scans", "scans_in_bursts", "held_scans", "held_scan_max_delay_us",
     // lms100_emulator and robot_sim's emulated sensor
@@ -18,7 +18,8 @@ constexpr std::array<std::string_view, 39> kNormalCounters = {
     "rssi_scale_8bit", "scans_compensated_odometry", "scans_compensated_fixes", "rejected_shape",
     "rejected_too_few_beams", "rejected_occluded",
     // reflector_matcher
-    "global_relocalizations", "startup_scans_without_prior",
+    "global_relocalizations", "startup_scans_without_prior", "initial_poses_received",
+    "initial_poses_confirmed",
     // pose_solver: the range bias gauges, and fixes where b was held (said in the OK detail)
     "range_bias_um", "range_bias_sigma_um", "range_bias_unestimable_fixes",
     // pose_fusion: the fixes and scans it used, and its gauges (range bias, shared name with the

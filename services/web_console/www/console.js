@@ -11,7 +11,7 @@ const state = {
   heartbeats: new Map(), console: { control_enabled: false }, localization: null,
 };
 
-const mapView = new MapView(document.getElementById('map'), state, sendGoal);
+const mapView = new MapView(document.getElementById('map'), state, sendClick);
 // For diagnostics from the browser's console, and for the browser test (tests/web_console), which
 // computes the map point of the pixel it clicks with the view's own transform.
 window.refloc = { state, mapView };
@@ -100,15 +100,21 @@ function sendCommand(command) {
   socket.send(JSON.stringify({ ...command, token: $('token').value }));
 }
 
-function sendGoal(x, y, theta) {
-  sendCommand({ type: 'goal', x, y, theta });
-  $('goal-mode').classList.remove('armed');
+// A click in 'goal' mode is a goal (NAV_GOAL); in 'pose' mode "the robot is here" (INITIAL_POSE,
+// a prior reflector_matcher verifies against the scans before it trusts it).
+function sendClick(mode, x, y, theta) {
+  sendCommand({ type: mode === 'pose' ? 'initial_pose' : 'goal', x, y, theta });
+  armClick(null);
 }
 
-$('goal-mode').onclick = () => {
-  mapView.goalMode = !mapView.goalMode;
-  $('goal-mode').classList.toggle('armed', mapView.goalMode);
-};
+function armClick(mode) {
+  mapView.clickMode = mode;
+  $('goal-mode').classList.toggle('armed', mode === 'goal');
+  $('pose-mode').classList.toggle('armed', mode === 'pose');
+}
+
+$('goal-mode').onclick = () => armClick(mapView.clickMode === 'goal' ? null : 'goal');
+$('pose-mode').onclick = () => armClick(mapView.clickMode === 'pose' ? null : 'pose');
 $('stop').onclick = () => sendCommand({ type: 'stop' });
 $('fit').onclick = () => { mapView.fit(); redraw(); };
 $('ellipse-scale').onchange = (e) => { mapView.ellipseScale = Number(e.target.value); redraw(); };

@@ -33,7 +33,8 @@ export class MapView {
   constructor(canvas, state, onGoal) {
     this.canvas = canvas; this.state = state; this.onGoal = onGoal;
     this.scale = 40; this.originX = 0; this.originY = 0;  // px per m; screen px of map (0, 0)
-    this.goalMode = false; this.ellipseScale = 100;
+    this.clickMode = null;  // 'goal' or 'pose': the next click on the map is one
+    this.ellipseScale = 100;
     canvas.addEventListener('wheel', (e) => this.zoom(e), { passive: false });
     canvas.addEventListener('mousedown', (e) => this.down(e));
     window.addEventListener('mousemove', (e) => this.move(e));
@@ -64,7 +65,7 @@ export class MapView {
   }
   down(e) { this.drag = { start: this.local(e), last: this.local(e) }; }
   move(e) {
-    if (!this.drag || this.goalMode) return;
+    if (!this.drag || this.clickMode) return;
     const [px, py] = this.local(e);
     this.originX += px - this.drag.last[0];
     this.originY += py - this.drag.last[1];
@@ -75,12 +76,13 @@ export class MapView {
     if (!this.drag) return;
     const start = this.drag.start, end = this.local(e);
     this.drag = null;
-    if (!this.goalMode) return;
-    this.goalMode = false;
+    const mode = this.clickMode;
+    if (!mode) return;
+    this.clickMode = null;
     const [x, y] = this.toMap(start[0], start[1]);
     const dragged = Math.hypot(end[0] - start[0], end[1] - start[1]) > 10;
     const theta = dragged ? Math.atan2(-(end[1] - start[1]), end[0] - start[0]) : 0;
-    this.onGoal(x, y, theta);
+    this.onGoal(mode, x, y, theta);
   }
 
   draw() {
@@ -89,7 +91,7 @@ export class MapView {
     const g = c.getContext('2d');
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
     g.clearRect(0, 0, c.clientWidth, c.clientHeight);
-    this.canvas.classList.toggle('goal', this.goalMode);
+    this.canvas.classList.toggle('goal', this.clickMode !== null);
     this.drawGrid(g);
     const s = this.state;
     if (s.map) this.drawMap(g, s.map);
