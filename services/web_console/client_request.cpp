@@ -20,6 +20,17 @@ std::optional<double> bounded_number(const nlohmann::json& j, const char* key, d
 
 }  // namespace
 
+std::string command_result_frame(const RequestVerdict& verdict, const char* refusal) {
+  // Refusal reasons and command names are fixed identifiers: nothing to escape.
+  const char* reason = refusal != nullptr ? refusal : verdict.refusal;
+  if (reason != nullptr || !verdict.command)
+    return std::string(R"({"type":"command_result","ok":false,"reason":")") + (reason ? reason : "refused") +
+           "\"}";
+  const char* names[] = {"goal", "stop", "initial_pose"};
+  return std::string(R"({"type":"command_result","ok":true,"command":")") +
+         names[static_cast<int>(verdict.command->kind)] + "\"}";
+}
+
 bool RequestValidator::token_matches(const std::string& token) const {
   // Every character compared whatever the first difference: the time says nothing about the token.
   const std::string& expected = control_.token;

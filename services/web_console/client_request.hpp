@@ -32,6 +32,11 @@ struct RequestVerdict {
   const char* refusal = nullptr;          ///< the reason when refused (a counter suffix)
 };
 
+/// The answer to the client that sent a message: {"type":"command_result","ok":true,"command":"goal"}
+/// or {"type":"command_result","ok":false,"reason":"bad_token"}; refusal overrides an accepted
+/// verdict (the inbox was full).
+std::string command_result_frame(const RequestVerdict& verdict, const char* refusal = nullptr);
+
 /// Goal coordinates beyond this are refused [m]: no site is 10 km across.
 inline constexpr double kMaxGoalCoordinate_m = 1e4;
 

@@ -63,7 +63,8 @@ struct ConsoleServer::Impl {
   void remove_client(uint64_t id);
   std::shared_ptr<const std::string> next_frame(uint64_t id);
   void write_done(uint64_t id);
-  void on_client_message(const std::string& text);
+  /// Judges a client's message, queues the command and answers that client (command_result).
+  void on_client_message(uint64_t id, const std::string& text);
 
   ConsoleServerConfig config;
   RequestValidator validator;
@@ -141,7 +142,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
       if (!self->ws_.got_text()) {
         self->server_.count("requests_refused_not_json");
       } else {
-        self->server_.on_client_message(beast::buffers_to_string(self->buffer_.data()));
+        self->server_.on_client_message(self->id_, beast::buffers_to_string(self->buffer_.data()));
       }
       self->read_next();
     });
@@ -299,17 +300,26 @@ void ConsoleServer::Impl::write_done(uint64_t id) {
   if (it != clients.end()) it->second.queue.write_done();
 }
 
-void ConsoleServer::Impl::on_client_message(const std::string& text) {
+void ConsoleServer::Impl::on_client_message(uint64_t id, const std::string& text) {
   const RequestVerdict verdict = validator.judge(text);
-  std::lock_guard<std::mutex> lock(mutex);
-  if (!verdict.command) {
-    ++counters[std::string("requests_refused_") + verdict.refusal];
-  } else if (inbox.size() >= config.command_inbox) {
-    ++counters["requests_refused_inbox_full"];
-  } else {
-    inbox.push_back(*verdict.command);
-    ++counters["requests_accepted"];
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    const char* refusal = nullptr;
+    if (!verdict.command) {
+      ++counters[std::string("requests_refused_") + verdict.refusal];
+    } else if (inbox.size() >= config.command_inbox) {
+      ++counters["requests_refused_inbox_full"];
+      refusal = "inbox_full";
+    } else {
+      inbox.push_back(*verdict.command);
+      ++counters["requests_accepted"];
+    }
+    const auto client = clients.find(id);
+    if (client != clients.end() && !client->second.queue.push(std::make_shared<const std::string>(
+                                       command_result_frame(verdict, refusal))))
+      ++counters["frames_dropped"];
   }
+  if (!flush_posted.exchange(true)) net::post(ioc, [this] { flush_all(); });
 }
 
 ConsoleServer::ConsoleServer(const ConsoleServerConfig& config, const RequestValidator& validator,

@@ -96,10 +96,19 @@ def page(args):
             ActionChains(driver).reset_actions()
             return {"viewport_px": [x, y], "map_m": expected}
 
+        def command_result():
+            return driver.find_element(By.ID, "command-result").text
+
         clicks["without_token"] = click_goal(0.40, 0.55, "")
         time.sleep(0.5)
+        clicks["without_token"]["page_says"] = command_result()
+        if command_result() != "refused: bad_token":
+            fail(failures, f"the page does not say the goal without the token was refused: {command_result()!r}")
         clicks["with_token"] = click_goal(0.55, 0.45, args.token)
         time.sleep(1.0)  # the goal drawn, the navigator under way
+        clicks["with_token"]["page_says"] = command_result()
+        if command_result() != "goal sent":
+            fail(failures, f"the page does not say the goal was sent: {command_result()!r}")
         driver.find_element(By.ID, "stop").click()
         time.sleep(1.5)  # standing still, so that the pose given below is where the robot stays
 

@@ -48,6 +48,16 @@ TEST(RequestValidator, AnInitialPoseIsACommandLikeAGoalWithTheSameChecks) {
             "bad_number");
 }
 
+TEST(RequestValidator, TheSenderIsToldWhatBecameOfItsCommand) {
+  const RequestValidator on = validator(true);
+  EXPECT_EQ(command_result_frame(on.judge(R"({"type":"goal","token":"s3cret-token","x":1,"y":2,"theta":0})")),
+            R"({"type":"command_result","ok":true,"command":"goal"})");
+  EXPECT_EQ(command_result_frame(on.judge(R"({"type":"initial_pose","x":1,"y":2,"theta":0})")),
+            R"({"type":"command_result","ok":false,"reason":"bad_token"})");
+  EXPECT_EQ(command_result_frame(on.judge(R"({"type":"stop","token":"s3cret-token"})"), "inbox_full"),
+            R"({"type":"command_result","ok":false,"reason":"inbox_full"})");
+}
+
 TEST(RequestValidator, EveryBadMessageIsRefusedWithItsReason) {
   const RequestValidator on = validator(true);
   EXPECT_EQ(refusal(on, std::string(257, ' ')), "too_large");

@@ -78,6 +78,11 @@ const handlers = {
   },
   map_health: (f) => { state.mapHealth = f; },
   localization: (f) => { state.localization = f; },
+  // The service's answer to this page's last command: sent, or refused and why.
+  command_result: (f) => {
+    $('command-result').textContent = f.ok ? `${f.command.replace('_', ' ')} sent` : `refused: ${f.reason}`;
+    $('command-result').className = f.ok ? 'ok' : 'bad';
+  },
 };
 
 function connect() {
