@@ -149,6 +149,7 @@ nlohmann::json MissionMonitor::report(const std::string& log_file) const {
   j["max_waypoint_heading_error_deg"] = max_heading * 180.0 / M_PI;
   j["pose_rmse_mm"] = pose_stats.rmse_xy_m * 1000.0;
   j["pose_max_error_mm"] = pose_stats.max_xy_m * 1000.0;
+  j["pose_max_error_moving_mm"] = pose_stats.max_xy_moving_m * 1000.0;
   j["pose_samples"] = pose_stats.count;
   j["pose_heading_rmse_mrad"] = pose_stats.rmse_heading_rad * 1000.0;
   j["laser_pose_rmse_mm"] = laser_stats.rmse_xy_m * 1000.0;

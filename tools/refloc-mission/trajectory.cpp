@@ -40,6 +40,12 @@ ErrorStats compare(const Trajectory& estimate, const Trajectory& truth, int64_t 
     sum_xy2 += exy2;
     sum_th2 += eth * eth;
     stats.max_xy_m = std::max(stats.max_xy_m, std::sqrt(exy2));
+    // The truth's own motion over +-20 ms around the sample.
+    const auto before = truth.at(s.utime - 20000), after = truth.at(s.utime + 20000);
+    if (before && after &&
+        (std::hypot(after->x - before->x, after->y - before->y) > kMovingSpeed_m_s * 0.04 ||
+         std::abs(angle_diff(after->theta, before->theta)) > kMovingYawRate_rad_s * 0.04))
+      stats.max_xy_moving_m = std::max(stats.max_xy_moving_m, std::sqrt(exy2));
     ++stats.count;
   }
   if (stats.count > 0) {

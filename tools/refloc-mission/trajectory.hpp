@@ -32,8 +32,14 @@ struct ErrorStats {
   size_t count = 0;
   double rmse_xy_m = 0.0;  ///< sqrt(mean(dx^2 + dy^2)) [m]
   double max_xy_m = 0.0;   ///< [m]
+  /// Over the samples where the truth moves (faster than kMovingSpeed or kMovingYawRate): the
+  /// "max while driving", without the robot standing at the start while the filter settles [m].
+  double max_xy_moving_m = 0.0;
   double rmse_heading_rad = 0.0;
 };
+
+inline constexpr double kMovingSpeed_m_s = 0.02;
+inline constexpr double kMovingYawRate_rad_s = 0.02;
 
 /// Errors of estimate against truth interpolated at each estimate's time.
 /// Estimates before from_utime are ignored.

@@ -91,5 +91,20 @@ TEST(TrajectoryConsistency, MatchesTheTruthAtTheFixStampAndSkipsUncoveredFixes) 
   EXPECT_EQ(s.position_outside_99, 0.0);
 }
 
+// "max while driving": an error while the truth stands still counts in max_xy_m only.
+TEST(TrajectoryCompare, TheMovingMaximumLeavesOutTheRobotStandingStill) {
+  Trajectory truth, estimate;
+  for (int k = 0; k <= 200; ++k) {  // 1 s standing at 0, then 1 s at 1 m/s along x, 100 Hz
+    const int64_t t = k * 10000;
+    const double x = k <= 100 ? 0.0 : (k - 100) * 0.01;
+    truth.add(t, {x, 0.0, 0.0});
+    const double error = k == 50 ? 0.006 : (k == 150 ? 0.004 : 0.001);
+    estimate.add(t, {x, error, 0.0});
+  }
+  const ErrorStats stats = compare(estimate, truth);
+  EXPECT_NEAR(stats.max_xy_m, 0.006, 1e-12);
+  EXPECT_NEAR(stats.max_xy_moving_m, 0.004, 1e-12);
+}
+
 }  // namespace
 }  // namespace refloc
