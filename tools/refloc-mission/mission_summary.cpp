@@ -41,11 +41,12 @@ std::string format_mission_summary(const nlohmann::json& report) {
                      report["max_waypoint_error_mm"].get<double>(),
                      report["max_waypoint_heading_error_deg"].get<double>());
   out += fmt::format(
-      "POSE RMSE vs GROUND_TRUTH: {:.1f} mm (max {:.1f} mm, {:.1f} mm while moving), heading {:.2f} mrad, over "
+      "POSE RMSE vs GROUND_TRUTH: {:.1f} mm (max {:.1f} mm, {:.1f} mm while moving), heading {:.2f} mrad, "
+      "over "
       "{} samples\n",
       report["pose_rmse_mm"].get<double>(), report["pose_max_error_mm"].get<double>(),
-      report.value("pose_max_error_moving_mm", 0.0),
-      report.value("pose_heading_rmse_mrad", 0.0), report["pose_samples"].get<size_t>());
+      report.value("pose_max_error_moving_mm", 0.0), report.value("pose_heading_rmse_mrad", 0.0),
+      report["pose_samples"].get<size_t>());
   out += fmt::format("LASER_POSE RMSE vs GROUND_TRUTH: {:.1f} mm, heading {:.2f} mrad, over {} fixes\n",
                      report["laser_pose_rmse_mm"].get<double>(),
                      report.value("laser_pose_heading_rmse_mrad", 0.0),
