@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(WrapAngle, MapsIntoHalfOpenInterval) {
   EXPECT_DOUBLE_EQ(wrap_angle(M_PI), M_PI);
@@ -48,5 +48,5 @@ TEST(DegreeConversion, RoundTripsAndHitsKnownValues) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -9,7 +9,7 @@
 #include <fstream>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 using ::testing::Not;
@@ -95,5 +95,5 @@ TEST(ConfigErrors, MissingFile) {
   expect_config_error(check_map("/nonexistent/map.json"), "/nonexistent/map.json", "cannot open");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 JsonConfig read_example(const std::string& text) {
   JsonConfig file = JsonConfig::parse_text(text, "example.json");
@@ -73,5 +73,5 @@ TEST(ConfigReference, CommentsInAConfigFileAreAccepted) {
   EXPECT_EQ(file.integer("/a", 0), 1);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -10,7 +10,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 Pose2 perturbed(const Pose2& p, int axis, double h) {
   Pose2 q = p;
@@ -98,5 +98,5 @@ TEST(PropagateThroughMount, AgreesWithSampledPosesToFirstOrder) {
   EXPECT_LT((sampled - predicted).cwiseAbs().maxCoeff(), 0.05 * predicted.cwiseAbs().maxCoeff());
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

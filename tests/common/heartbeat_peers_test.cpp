@@ -9,7 +9,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 HeartbeatIdentity sender(int32_t pid, int64_t start_utime = 1'000'000'000, bool stopping = false) {
   return {"pose_solver", pid, start_utime, stopping};
@@ -111,5 +111,5 @@ TEST(OwnNameMonitor, AnotherPidUnderOurNameIsAConflictOurOwnEchoIsNot) {
   EXPECT_EQ(own.conflict(6.0), "");  // 200 not heard for 3 s
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

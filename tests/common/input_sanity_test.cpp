@@ -6,7 +6,7 @@
 #include <limits>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -41,5 +41,5 @@ TEST(InputSanity, ACovarianceMustBeFiniteSymmetricPsdAndBounded) {
   EXPECT_FALSE(is_usable_covariance(c * 1e9, 1e4));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -7,7 +7,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 1'700'000'000'000'000;
 constexpr int64_t kPeriod = 20'000;  // 50 Hz [us]
@@ -124,5 +124,5 @@ TEST(InputStreamChecks, AGapIsLoggedAndACounterResetCounted) {
   EXPECT_STREQ(events[1].counter, "counter_reset_scan");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -10,7 +10,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr const char* kBus = "udpm://239.255.76.67:7667?ttl=0";
 
@@ -122,5 +122,5 @@ TEST(InstanceLock, ManyRefusedStartersStillLearnThePidAfterDraining) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

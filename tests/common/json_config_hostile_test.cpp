@@ -18,7 +18,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 using ::testing::Not;
@@ -143,5 +143,5 @@ TEST(JsonConfigHostile, NumberOverflowIsNotValidJson) {
               HasSubstr("t.json: not valid JSON"));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -81,5 +81,5 @@ TEST(JsonConfig, UnreadableAndMalformedFilesAreConfigErrors) {
   EXPECT_THAT(error_of([&] { JsonConfig::load_file(path); }), HasSubstr("not valid JSON"));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

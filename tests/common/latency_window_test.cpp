@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(LatencyWindow, PercentilesOfKnownSamples) {
   LatencyWindow w(1000);
@@ -23,5 +23,5 @@ TEST(LatencyWindow, KeepsOnlyTheNewestSamples) {
 
 TEST(LatencyWindow, EmptyGivesZero) { EXPECT_EQ(LatencyWindow().percentile(0.5), 0.0); }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

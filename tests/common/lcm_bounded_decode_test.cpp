@@ -18,7 +18,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 template <class Message>
 std::vector<uint8_t> encoded(const Message& m) {
@@ -207,5 +207,5 @@ TEST(ServiceRuntimeBoundedDecode, ImplausibleNumberIsCountedPerChannelAndNeverHa
   EXPECT_EQ(delivered, 1);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

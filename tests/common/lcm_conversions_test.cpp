@@ -6,7 +6,7 @@
 #include <refloc/pose2d_t.hpp>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(CovarianceConversion, RowMajorRoundTripKeepsAsymmetricEntriesInPlace) {
   Eigen::Matrix3d c;
@@ -43,5 +43,5 @@ TEST(ReflectorConversion, DetectionRoundTrip) {
   EXPECT_NEAR(back.fitted_radius_m, d.fitted_radius_m, 1e-7);  // float on the wire
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -13,7 +13,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 template <class Message>
 std::vector<uint8_t> encode(const Message& m) {
@@ -199,5 +199,5 @@ TYPED_TEST(LcmSchemaCheck, LyingStringLengthsAreRefusedWithTheReason) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -10,7 +10,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::string refusal_of(const std::string& url) {
   try {
@@ -200,5 +200,5 @@ TEST(LcmUrlDeployment, InstallDepsSetsRmemMaxToWhatTheUrlAsks) {
   EXPECT_NE(script.find("rmem_max_bytes=" + std::to_string(kLcmRecvBufSizeBytes)), std::string::npos);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

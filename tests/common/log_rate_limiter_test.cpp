@@ -6,7 +6,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(LogRateLimiter, FiftyLinesASecondBecomeOneWithTheCountHeldBack) {
   LogRateLimiter limiter(1'000'000);
@@ -109,5 +109,5 @@ TEST(StateChangeLogLimiter, ErrorAndStoppingAreNeverHeldBackBehindOtherChanges) 
   EXPECT_EQ(stopping->text, "state STOPPING (was ERROR): signal 15");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const MecanumKinematics kKinematics(0.076, 0.25, 0.22);
 
@@ -50,5 +50,5 @@ TEST(MecanumKinematics, OneWheelDisagreeingShowsInTheResidual) {
   EXPECT_NEAR(std::abs(kKinematics.redundancy_residual(w)), 0.076 / 4.0 * 0.2 * 0.5 / 0.076, 1e-12);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(IncrementCovariance, GrowsWithDistanceAndTurn) {
   const OdometryNoise noise;
@@ -45,5 +45,5 @@ TEST(ParseOdometryNoise, ReadsTheSectionAndNamesABadKey) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -12,7 +12,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 using ::testing::IsEmpty;
@@ -94,5 +94,5 @@ TEST(ReflectorMapSpacing, ThreeNonColinearReflectorsGiveNoWarning) {
   EXPECT_THAT(map.warnings, IsEmpty());
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -55,5 +55,5 @@ TEST(ReflectorMap, MissingCoordinateAndBadRadiusAreNamed) {
       HasSubstr("/reflectors/0/radius_m: expected a finite number in [0.001, 5]"));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

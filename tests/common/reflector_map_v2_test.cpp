@@ -11,7 +11,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -199,5 +199,5 @@ TEST(ReflectorMapV2, DemoV2MapIsTheDemoMapPlusTheWorldsWallsAndObstacles) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -14,7 +14,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -128,5 +128,5 @@ TEST(ReflectorMapWriter, ReplacesAnExistingFileAndNamesAnUnwritablePath) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

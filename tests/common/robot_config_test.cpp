@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const std::string kConfigDir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/";
 
@@ -63,5 +63,5 @@ TEST(RobotConfig, OutOfRangeAndUnknownKeysAreNamed) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

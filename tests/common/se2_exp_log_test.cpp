@@ -9,7 +9,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(Se2Exp, ConstantTwistEndsOnTheAnalyticCircle) {
   // vx = 0.5 m/s, wz = 0.5 rad/s: circle of radius 1 m centred at (0, 1).
@@ -100,5 +100,5 @@ TEST(Se2Log, InterpolatingAlongTheArcSplitsTheStep) {
   EXPECT_TRUE(approx_equal(split, x, 1e-12, 1e-12));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

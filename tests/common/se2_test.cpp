@@ -7,7 +7,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::vector<Pose2> random_poses(size_t n) {
   std::mt19937_64 rng(42);
@@ -52,5 +52,5 @@ TEST(Pose2, PaperEquationOneIsThePoseAction) {
   EXPECT_NEAR(map_p.y(), 2.0 + 3.0 * std::sin(0.5) - 1.0 * std::cos(0.5), 1e-12);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

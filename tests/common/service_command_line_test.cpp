@@ -9,7 +9,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// argv for CLI11 from literal arguments.
 struct Argv {
@@ -81,5 +81,5 @@ TEST(ServiceCommandLine, OtherExceptionsExitOne) {
   EXPECT_EQ(cli.run(a.argc(), a.argv(), []() -> int { throw std::runtime_error("boom"); }), 1);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <limits>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kHostStart_utime = 1'800'000'000'000'000;  // some day in 2027
 constexpr int64_t kPeriod_us = 20'000;                       // a 50 Hz stream
@@ -146,5 +146,5 @@ TEST(StampGuard, VerdictsHaveCounterNames) {
   EXPECT_FALSE(stamp_accepted(StampVerdict::kBehind));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

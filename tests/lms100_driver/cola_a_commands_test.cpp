@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(ColaACommands, RequestsAreTheDocumentedStrings) {
   EXPECT_EQ(request_login(), "sMN SetAccessMode 03 F4724744");
@@ -100,5 +100,5 @@ TEST(ColaACommands, ReplyChecksAcceptRealRepliesAndExplainFailures) {
   EXPECT_FALSE(check_simple_reply("sFA 1", "sAN Run 1").ok());
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include "lms100_driver/cola_a_format.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 void feed_string(ColaASplitter& splitter, const std::string& bytes) {
   splitter.feed(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
@@ -110,5 +110,5 @@ TEST(ColaASplitter, ResetDropsOpenFrame) {
   EXPECT_EQ(splitter.garbage_bytes(), 13u);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -15,7 +15,7 @@
 #include "lms100_driver/scan_plausibility.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// The captured TCP segments of the sensor, in order, as bytes.
 std::vector<std::string> read_segments(const std::string& name) {
@@ -155,5 +155,5 @@ TEST(ColaBCapture, ATruncatedReplyIsAnErrorNotARead) {
   EXPECT_FALSE(decode_cola_b_reply("xy", text));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -9,7 +9,7 @@
 #include "lms100_driver/scan_conversion.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// The three real LMS111 CoLa-B scan frames of tests/data/sick-real/lms111_cola_b_scans.hex.
 std::vector<std::string> real_frames() {
@@ -87,5 +87,5 @@ TEST(ColaBScanDataParser, CorruptFramesAreRejected) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

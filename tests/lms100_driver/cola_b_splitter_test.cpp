@@ -10,7 +10,7 @@
 #include "lms100_driver/cola_b_commands.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::vector<std::string> split(ColaBSplitter& splitter, const std::string& stream, size_t chunk) {
   std::vector<std::string> out;
@@ -55,5 +55,5 @@ TEST(ColaBSplitter, ResetForgetsAHalfFrame) {
   EXPECT_EQ(split(splitter, frame, frame.size()), (std::vector<std::string>{"sAN Run \x01"}));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -11,7 +11,7 @@
 #include "telegram_fixtures.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -87,5 +87,5 @@ TEST(DeviceProfile, MultiLayerTelegramIsRefusedWithTheReasonWhateverTheProfile) 
   EXPECT_EQ(check_scan_plausibility(single).reason, ScanImplausibility::kLayerAngle);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

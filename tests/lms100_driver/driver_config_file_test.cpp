@@ -5,7 +5,7 @@
 #include <fstream>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 DriverServiceConfig parse(const std::string& text) {
   JsonConfig file(nlohmann::json::parse(text), "test.json");
@@ -102,5 +102,5 @@ TEST(DriverConfigFile, ClockSettleReadsIsReadAndRangeChecked) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

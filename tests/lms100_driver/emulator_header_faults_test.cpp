@@ -12,7 +12,7 @@
 #include "lms100_emulator/lmd_scandata_encoder.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -63,5 +63,5 @@ TEST(EmulatorHeaderFaults, ReservedCodesArriveAndBecomeNoEcho) {
   EXPECT_FLOAT_EQ(s.ranges[14], 3.0F);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

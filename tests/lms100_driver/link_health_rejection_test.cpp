@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -52,5 +52,5 @@ TEST(LinkHealthRejection, LogLinesAreRateLimitedAndCountWhatWasSkipped) {
   EXPECT_EQ(h.on_scan_rejected(6 * kS, "b"), "refused 250 implausible scans: b");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(LinkHealth, StreamingWithRecentScanIsOk) {
   const LinkVerdict v = judge_link(SessionState::kStreaming, "streaming 50 Hz", 0.02, 5.0);
@@ -75,5 +75,5 @@ TEST(LinkHealth, CountersCarrySessionCountsAndPublishFailuresByName) {
   EXPECT_EQ(by_name.at("publish_failures"), 2);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

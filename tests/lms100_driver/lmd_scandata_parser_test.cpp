@@ -8,7 +8,7 @@
 #include "telegram_fixtures.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using test::make_scan_telegram;
 using test::read_telegram_payload;
@@ -235,5 +235,5 @@ TEST(LmdScanDataParser, DoubleSpaceIsAnError) {
   EXPECT_FALSE(parse_lmd_scandata(t, d).ok());
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include "telegram_fixtures.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr double kDeg = M_PI / 180.0;
 
@@ -95,5 +95,5 @@ TEST(ScanConversion, MissingDistOrMismatchedRssiOrNanScaleIsAnError) {
   EXPECT_FALSE(to_laser_scan(d, s).ok());
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

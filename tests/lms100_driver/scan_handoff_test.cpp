@@ -9,7 +9,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 LaserScan scan_number(uint32_t n) {
   LaserScan s;
@@ -45,5 +45,5 @@ TEST(ScanHandoff, WhenNobodyDrainsTheOldestAreDroppedAndCounted) {
   EXPECT_EQ(handoff.dropped(), 2u);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -11,7 +11,7 @@
 #include "telegram_fixtures.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -101,5 +101,5 @@ TEST(ScanPlausibility, ReservedCodesAreNoEchoAndCounted) {
   EXPECT_FLOAT_EQ(s.ranges[6], 0.016F);  // the first valid distance
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

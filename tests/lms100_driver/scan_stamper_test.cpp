@@ -6,7 +6,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 // A 50 Hz sensor whose clock equals host time minus kEpoch: scan k starts at k · 20 ms and is
 // transmitted kStartToTransmitUs later; the link adds kMinDelayUs to a telegram sent at once.
@@ -157,5 +157,5 @@ TEST(ScanStamper, SensorRebootRestartsTheFitAndHoldsAgain) {
   EXPECT_EQ(out.scans[10].utime, host - kStartToTransmitUs);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// A simulated sensor at 50 Hz whose crystal runs drift_ppm faster than the host's, with
 /// one-sided network delay: min_delay + exponential jitter + occasional 30 ms stalls.
@@ -143,5 +143,5 @@ TEST(SensorClockFilter, SensorRebootRestartsTheFit) {
   EXPECT_EQ(m.host_start_utime, 1'000'040'500 - 3000);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -19,7 +19,7 @@
 #include "lms100_emulator/test_pattern_scan_source.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using namespace std::chrono_literals;
 
@@ -289,7 +289,7 @@ TEST_F(SessionEmulatorTest, StopWhileStreamingReturnsWithinOneAndAHalfSeconds) {
   EXPECT_EQ(session_->state(), SessionState::kStopped);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc
 
 #else

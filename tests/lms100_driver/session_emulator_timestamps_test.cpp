@@ -23,7 +23,7 @@
 #include "scan_sink.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using namespace std::chrono_literals;
 
@@ -136,7 +136,7 @@ TEST(SessionEmulatorTimestamps, StampsRunLateByTheHiddenLinkDelayAndNoMore) {
   EXPECT_NEAR(delayed_us - quiet_us, 2000.0, 500.0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc
 
 #else

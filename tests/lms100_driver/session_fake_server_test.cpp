@@ -15,7 +15,7 @@
 #include "telegram_fixtures.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using namespace std::chrono_literals;
 using test::ChattySensor;
@@ -188,5 +188,5 @@ TEST(SessionFakeServer, StreakOfBadScansReconnects) {
   EXPECT_GE(session.counters().parse_errors.load(), 3u);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -21,7 +21,7 @@
 #include "scan_sink.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using namespace std::chrono_literals;
 using test::FakeSensor;
@@ -237,5 +237,5 @@ TEST(SessionTimestamps, MidStreamBurstAndReconnectKeepStampsWithinBound) {
   EXPECT_EQ(all.not_increasing, 0u);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::vector<std::string> read_all(ColaARequestReader& reader, const std::string& bytes) {
   reader.feed(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
@@ -52,5 +52,5 @@ TEST(ColaARequestReader, ResetForgetsTheOpenRequest) {
   EXPECT_EQ(read_all(reader, "\x02sMN Run\x03"), (std::vector<std::string>{"sMN Run"}));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

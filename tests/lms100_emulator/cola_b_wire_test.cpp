@@ -13,7 +13,7 @@
 #include "lms100_emulator/lmd_scandata_encoder.hpp"
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::vector<std::string> recorded_lms111_frames() {
   std::ifstream in(std::string(REFLOC_SOURCE_DIR) + "/tests/data/sick-real/lms111_cola_b_scans.hex");
@@ -128,5 +128,5 @@ TEST(ColaBWire, RequestReaderSkipsJunkAndBadChecksumsAndJoinsSplitReads) {
   EXPECT_EQ(requests[0], "sMN Run");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 JsonConfig doc(const char* text) { return JsonConfig(nlohmann::json::parse(text), "test.json"); }
 
@@ -93,5 +93,5 @@ TEST(FaultCommand, RefusesMalformedLinesWithoutChangingAnything) {
   EXPECT_NE(message.find("unknown or malformed command 'explode'"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

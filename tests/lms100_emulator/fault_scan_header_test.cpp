@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -62,5 +62,5 @@ TEST(FaultScanHeaderCommands, CorruptionRewritesOnlyTheNamedTokens) {
   EXPECT_THAT(payload, HasSubstr(" 0 1 168 0 1 DIST1 40000000 00000000 FFF92230 1388 3 10 20 30 0"));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -11,7 +11,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::string read_real_lms111_payload() {
   std::ifstream in(std::string(REFLOC_SOURCE_DIR) + "/tests/data/sick-real/lms111_cola_a_scan.txt",
@@ -196,5 +196,5 @@ TEST(ColaAText, ReadsSignedDecimalAndPlainHexRequestNumbers) {
   EXPECT_FALSE(parse_cola_request_number("+12a", v));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -7,7 +7,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 class Lms100DeviceTest : public ::testing::Test {
  protected:
@@ -248,5 +248,5 @@ TEST(Lms100DeviceRandomRequests, EveryRequestGetsAnAnswerOrAScanAndTheDeviceStay
   EXPECT_EQ(reply, "sAN mLMPsetscancfg 0 1388 1 1388 FFF92230 225510");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

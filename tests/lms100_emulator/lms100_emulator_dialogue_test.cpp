@@ -9,7 +9,7 @@
 #include <thread>
 
 namespace refloc::test {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(Lms100EmulatorDialogue, AnswersTheDriverStartUpSequenceByteForByte) {
   auto emulator = start_emulator(make_test_emulator_config());
@@ -116,5 +116,5 @@ TEST(Lms100EmulatorDialogue, SurvivesGarbageAndAbruptDisconnects) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc::test

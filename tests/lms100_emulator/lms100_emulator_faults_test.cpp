@@ -9,7 +9,7 @@
 #include <thread>
 
 namespace refloc::test {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::vector<LmdScanData> collect(EmulatorTestClient& client, int count,
                                  std::vector<int64_t>* times = nullptr) {
@@ -198,5 +198,5 @@ TEST(Lms100EmulatorFaults, FirstWriteAfterPowerUpIsRefusedWithSfa4) {
   EXPECT_EQ(client.request("sWN LMDscandatacfg 01 00 1 1 0 00 00 0 0 0 1 +1"), "sFA 4");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc::test

@@ -11,7 +11,7 @@
 #include <vector>
 
 namespace refloc::test {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 struct ReceivedScan {
   LmdScanData data;
@@ -219,5 +219,5 @@ TEST(Lms100EmulatorStream, SourceSeesBeamTimesOnTheHostClock) {
   EXPECT_EQ(scans[0].data.channels16[0].values[0], 1234);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc::test

@@ -8,7 +8,7 @@
 #include <cmath>
 
 namespace refloc::sim {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr double kQuirkDeg = M_PI / 180.0;
 
@@ -48,5 +48,5 @@ TEST(RenderedScanSourceRssiScale, EightBitValuesInTheSixteenBitChannel) {
   EXPECT_GE(rssi[310], 230);  // not divided twice
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc::sim

@@ -5,7 +5,7 @@
 #include <cmath>
 
 namespace refloc::sim {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr double kDeg = M_PI / 180.0;
 
@@ -109,5 +109,5 @@ TEST(RenderedScanSource, ThrowingPoseGivesAScanWithoutEchoes) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc::sim

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(ScanScheduler, ScansFollowAFixedGridOnePeriodApartWithCountersPlusOne) {
   ScanScheduler scheduler(200000, 20000, 65534);
@@ -54,5 +54,5 @@ TEST(ScanScheduler, StatusGoesThreeFourFiveSevenOverTheSpinUp) {
   EXPECT_FALSE(scheduler.pop_due_scan(3000000, 1000, slot));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

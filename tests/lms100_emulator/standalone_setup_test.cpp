@@ -9,7 +9,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::string write_file(const std::string& name, const std::string& text) {
   const std::filesystem::path dir = std::filesystem::path(REFLOC_BINARY_DIR) / "standalone_setup_test";
@@ -109,5 +109,5 @@ TEST(StandaloneSetup, HeartbeatCountersCarryTheStatsByName) {
   EXPECT_EQ(counters[3].second, 5);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const std::string kConfigDir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/";
 
@@ -41,5 +41,5 @@ TEST(OdometryConfigFile, OutOfRangeKeyIsNamedWithItsSection) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include <limits>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 // Drives ideal wheels with a constant body twist and reports encoder counts,
 // quantised and wrapped as a motor controller would.
@@ -155,5 +155,5 @@ TEST(MecanumOdometry, OutOfOrderAndFirstSamplesAreNotIntegrated) {
   EXPECT_DOUBLE_EQ(odometry.estimate().odom_T_robot.x, 0.0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -14,7 +14,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 1'700'000'000'000'000;  // a plausible wall-clock stamp [us]
 constexpr int64_t kPeriod = 10'000;             // encoders at 100 Hz
@@ -113,5 +113,5 @@ TEST(OdometryHostileInput, APersistentEncoderClockStepIsBelievedAndIntegrationRe
   EXPECT_NEAR(last->twist.vx, 0.058, 0.002);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

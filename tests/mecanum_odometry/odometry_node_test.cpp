@@ -8,7 +8,7 @@
 #include <algorithm>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// The host's wall clock when a sample stamped utime arrives (1 ms later).
 int64_t host(int64_t utime) { return utime + 1'000; }
@@ -78,5 +78,5 @@ TEST(OdometryNode, SamplesArrivingButNoneAcceptedIsDegradedNamingTheRefusal) {
             "rejected_wheel_encoders_stamp_not_increasing");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -9,7 +9,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 struct ReachedError {
   double xy = 0.0;       ///< [m]
@@ -67,5 +67,5 @@ TEST(NavigatorClosedLoop, ReachesSixWaypointsWithinTenMillimetresAndHalfADegree)
   std::printf("\n");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 void expect_same_limits(const ProfileLimits& a, const ProfileLimits& b) {
   EXPECT_EQ(a.max_speed, b.max_speed);
@@ -60,5 +60,5 @@ TEST(NavigatorConfigFile, RotationLimitIsNamedWithItsSection) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -15,7 +15,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(FusedClosedLoop, NoisyDelayedFixesAndSlipStillReachWaypointsWithinFifteenMillimetres) {
   const RobotConfig robot;
@@ -90,5 +90,5 @@ TEST(FusedClosedLoop, NoisyDelayedFixesAndSlipStillReachWaypointsWithinFifteenMi
   EXPECT_LE(rejected, 2);  // 99.9 % gate: consistent fixes pass
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -15,7 +15,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 1'700'000'000'000'000;  // a plausible wall-clock time [us]
 constexpr int64_t kPeriod = 20'000;             // 50 Hz control, POSE at the same rate here
@@ -180,5 +180,5 @@ TEST(BoundedCommand, NonFiniteBecomesZeroAndTooFastIsClampedKeepingItsDirection)
   EXPECT_EQ(fine.vx, 0.3);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

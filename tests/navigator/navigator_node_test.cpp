@@ -9,7 +9,7 @@
 #include <limits>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 10'000'000;
 constexpr int64_t kPeriod = 20'000;  // 50 Hz control
@@ -93,5 +93,5 @@ TEST(NavigatorNode, CommandsContinueHalfASecondAfterTheGoalEnds) {
   EXPECT_FALSE(node.on_control_tick(last_active + NavigatorNode::kCommandHoldUs + 1).command);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

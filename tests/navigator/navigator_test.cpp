@@ -5,7 +5,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 10'000'000;
 constexpr int64_t kPeriod = 20'000;
@@ -117,5 +117,5 @@ TEST(Navigator, NoProgressAbortsAfterTheTimeout) {
   EXPECT_NE(nav.status().reason.find("no progress"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

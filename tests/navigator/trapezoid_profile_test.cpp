@@ -5,7 +5,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 struct Profile1d {
   double peak_speed = 0.0;
@@ -72,5 +72,5 @@ TEST(TrapezoidProfile, VectorRateLimitBoundsTheNormOfTheChange) {
   EXPECT_NEAR(next.x() / next.y(), 0.75, 1e-12);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

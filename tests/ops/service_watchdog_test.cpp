@@ -12,7 +12,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using testing::FakeNotifySocket;
 
@@ -78,5 +78,5 @@ TEST(ServiceWatchdog, WithoutSystemdRunIsUnaffected) {
   EXPECT_TRUE(runtime.watchdog_healthy());
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -34,7 +34,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const std::string kConfig = std::string(REFLOC_SOURCE_DIR) + "/deploy/config";
 
@@ -251,5 +251,5 @@ TEST(EvalPipelineEquivalence, RecordedLogInLogOrderThroughThePipelineReproducesT
   EXPECT_LT(worst_theta, 0.05 * M_PI / 180.0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

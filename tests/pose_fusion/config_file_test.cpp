@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(FusionConfigFile, DeployedFileEqualsTheCodeDefaults) {
   const FusionServiceConfig c =
@@ -55,5 +55,5 @@ TEST(FusionConfigFile, FlatKeysOfTheOldLayoutAreRejected) {
   EXPECT_THROW(file.reject_unknown_keys(), ConfigError);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -15,7 +15,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 100'000'000;
 constexpr int64_t kOdometryPeriod = 10'000;  // 100 Hz
@@ -320,5 +320,5 @@ TEST(DetectionFusionNode, BrokenOrUnusableMatchesAreCountedAndChangeNothing) {
   EXPECT_EQ(d.node.fusion().estimate().map_T_robot.x, before.map_T_robot.x);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -16,7 +16,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// These tests drive the filter with LASER_POSE alone (detections: detection_fusion_test.cpp).
 FusionServiceConfig laser_pose_config() {
@@ -287,5 +287,5 @@ TEST(PoseFusionTimeChecks, ANaNMahalanobisDistanceFailsTheGate) {
   EXPECT_TRUE(std::isfinite(fusion.estimate().map_T_robot.x));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

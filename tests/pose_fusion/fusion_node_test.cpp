@@ -11,7 +11,7 @@
 #include <limits>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// These tests drive the filter with LASER_POSE alone (detections: detection_fusion_test.cpp).
 FusionServiceConfig laser_pose_config() {
@@ -179,5 +179,5 @@ TEST(FusionNode, EveryFixResultHasItsOwnCounter) {
   EXPECT_STREQ(fix_result_counter(FixResult::kDeferred), "fixes_deferred");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -12,7 +12,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 100'000'000;
 constexpr int64_t kOdomPeriod = 10'000;  // 100 Hz
@@ -177,5 +177,5 @@ TEST(OdometrySilence, FixesBecomePoseOnlyWhileOdometryIsSilentAndNeverGoBackInTi
   EXPECT_FALSE(s.publish_fix(1'410'000, kT0 + 410'000));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// A state whose range bias and odometry error are known exactly (zero variance).
 FusionState pose_only(const Pose2& pose, const Eigen::Matrix3d& covariance) {
@@ -98,5 +98,5 @@ TEST_F(DetectionFixture, MapSigmaWidensTheInnovation) {
   EXPECT_GT(tight, loose);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

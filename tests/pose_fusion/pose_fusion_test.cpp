@@ -8,7 +8,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 100'000'000;
 constexpr int64_t kPeriod = 10'000;  // odometry at 100 Hz
@@ -189,5 +189,5 @@ TEST(PoseFusion, OdometryOutOfOrderIsIgnored) {
   EXPECT_EQ(fusion.utime(), kT0 + 3 * kPeriod);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

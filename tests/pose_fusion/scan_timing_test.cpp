@@ -13,7 +13,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 100'000'000;
 constexpr int64_t kOdometryPeriod = 10'000;  // 100 Hz
@@ -139,5 +139,5 @@ TEST(ScanTiming, StandingStillTheOffsetChangesNothing) {
   EXPECT_NEAR(estimated.position_nees, exact_stamps.position_nees, 1e-6);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include <cstdint>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kPeriodUs = 10'000;  // 100 Hz ODOMETRY
 
@@ -84,5 +84,5 @@ TEST(StreamGapCounter, AClockGoingBackStartsOver) {
   EXPECT_EQ(feed_regular(gaps, t, 5), 0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

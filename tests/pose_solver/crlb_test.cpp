@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::vector<Eigen::Vector2d> visible_points(const ReflectorMap& map, const Pose2& map_T_laser,
                                             const testing::SyntheticSensor& sensor) {
@@ -82,5 +82,5 @@ TEST(Crlb, SingleReflectorInformationMatchesTheRangeBearingModel) {
   EXPECT_NEAR(f(1, 2), 0.1 / (0.001 * 0.001), 1e-6);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

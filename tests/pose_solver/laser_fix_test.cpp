@@ -6,7 +6,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 PoseSolution solved(SolveStatus status, int used) {
   PoseSolution s;
@@ -75,5 +75,5 @@ TEST(LaserFix, SolverLostGivesNoPoseAndTheNoInformationCovariance) {
   EXPECT_EQ(counters_of(fix), (std::map<std::string, int64_t>{{"lost_fixes", 1}}));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

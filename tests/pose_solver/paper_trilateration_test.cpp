@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::vector<PointObservation> exact_observations(const ReflectorMap& map, const Pose2& map_T_laser) {
   std::vector<PointObservation> obs;
@@ -107,5 +107,5 @@ TEST(PaperSolver, HeadingNearPiIsWrongAsPublished) {
   EXPECT_LT(std::abs(angle_diff(fixed.map_T_robot.theta, truth.theta)), 0.01);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

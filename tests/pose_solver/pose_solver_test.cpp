@@ -6,7 +6,7 @@
 #include <Eigen/LU>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(PoseSolver, RecoversThePoseWithinNoise) {
   const ReflectorMap map = testing::hall_map();
@@ -151,5 +151,5 @@ TEST(PoseSolver, BadDetectionIndexIsSkipped) {
   EXPECT_EQ(solution.reflectors_used, static_cast<int>(scan.detections.size()));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -15,7 +15,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// True when a - b is positive semidefinite (a at least as uncertain as b in every direction).
 bool at_least_as_uncertain(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
@@ -160,5 +160,5 @@ TEST(RangeBiasFilter, GrowsWithTheDriftUpToThePriorAndAnOlderStampAddsNoTime) {
   EXPECT_EQ(filter.updates(), 1);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -13,7 +13,7 @@
 #include <cstdio>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr double kChi2TwoDof99 = 9.21;
 
@@ -192,5 +192,5 @@ TEST(RangeBiasMonteCarlo, OneScanAloneGivesAnUnbiasedPoseAndABiasWithinItsSigma)
   EXPECT_LT(std::abs(s.error_sum.y() / draws), 4.0 * std::sqrt(solution.covariance(1, 1) / draws));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

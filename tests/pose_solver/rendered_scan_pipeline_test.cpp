@@ -17,7 +17,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 struct Tally {
   int poses = 0, match_ok = 0, wrong_ok = 0, solved_ok = 0;
@@ -142,5 +142,5 @@ TEST(RenderedScanPipeline, APriorMetresOffIsOverruledByTheMapNeverConfirmed) {
   EXPECT_EQ(t.wrong_trusting, 0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

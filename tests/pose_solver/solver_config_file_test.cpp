@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(SolverConfigFile, DeployedFileIsValidAndComplete) {
   const JsonConfig file =
@@ -67,5 +67,5 @@ TEST(SolverConfigFile, PaperModeAndRangeErrors) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -16,7 +16,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 1'700'000'000'000'000;
 constexpr int64_t kPeriod = 20'000;
@@ -161,5 +161,5 @@ TEST(LaserFixCheck, ANonFiniteOrUnusableSolutionIsLostAndCountedNeverOk) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr double kDeg = M_PI / 180.0;
 
@@ -91,5 +91,5 @@ TEST(AdaptiveBreakpoint, PaperModeClustersAcrossDullBeamsButDefaultDoesNot) {
   EXPECT_EQ(clusters[0].num_selected, 3);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 LaserScan five_beam_scan() {
   LaserScan scan;
@@ -81,5 +81,5 @@ TEST(BeamTable, ReusedTableFollowsANewScanGeometry) {
   EXPECT_EQ(table.beams[2].direction.y(), std::sin(scan.beam_angle(2)));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

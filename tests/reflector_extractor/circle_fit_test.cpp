@@ -7,7 +7,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr double kDeg = M_PI / 180.0;
 constexpr double kSigma = 0.012;  // LMS100 range noise [m]
@@ -142,5 +142,5 @@ TEST(CircleFit, FreeRadiusFitFindsTheTrueRadiusOfA10cmCylinder) {
   EXPECT_NEAR(out.center.x(), 1.0, 1e-6);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 BeamTable table_of(const LaserScan& scan) {
   BeamTable table;
@@ -52,5 +52,5 @@ TEST(EnergyFilter, ScanWithoutRssiSelectsNothing) {
   EXPECT_EQ(high, (std::vector<uint8_t>{0, 0, 0}));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(ExtractorConfigFile, DeployedFileIsValidAndEqualsTheCodeDefaults) {
   const JsonConfig file =
@@ -132,5 +132,5 @@ TEST(ExtractorConfigFile, UnknownModeIsRejected) {
   EXPECT_THROW(parse_extractor_service_config(file), ConfigError);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

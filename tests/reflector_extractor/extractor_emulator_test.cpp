@@ -15,7 +15,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using sim::SurfaceKind;
 
@@ -250,5 +250,5 @@ TEST(ExtractorOnEmulatorScans, NoiseFreeCentresWithTheSpotModel) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

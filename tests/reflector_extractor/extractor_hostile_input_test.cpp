@@ -17,7 +17,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 1'700'000'000'000'000;  // a 2023 wall clock [us]
 constexpr int64_t kPeriod = 20'000;
@@ -208,5 +208,5 @@ TEST_F(ExtractorHostileInput, MissingScanCountersAreCountedAsGapsAndARestartIsAR
   EXPECT_EQ(counters_["counter_reset_scan"], 1);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -11,7 +11,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 LaserScan good_scan() {
   SyntheticScene scene;
@@ -111,5 +111,5 @@ TEST(ExtractorOdometryCheck, ANanInfiniteOrAbsurdTwistIsNotUsable) {
   EXPECT_EQ(reason({0.0, 0.0, 1e300}), "out_of_bounds");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

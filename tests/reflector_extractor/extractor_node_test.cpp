@@ -10,7 +10,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 LaserScan scan_with_one_reflector(uint32_t seed) {
   SyntheticScene scene;
@@ -203,5 +203,5 @@ TEST(ExtractorHealth, StartingAndWaitingForTheScanChannelUntilAnyMessageThenOk) 
   EXPECT_EQ(ok.detail, "");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -9,7 +9,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr double kDeg = M_PI / 180.0;
 
@@ -257,5 +257,5 @@ TEST(PaperMode, DBarAboveTheLineIsRejected) {
   EXPECT_EQ(extractor.stats().rejected_not_round, 1);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 1'700'000'000'000'000;
 constexpr int64_t kPeriod_us = 20'000;  // LMS100 at 50 Hz
@@ -134,5 +134,5 @@ TEST(FixVelocityEstimator, FixesScatteredAboutTheLineGiveNoEstimate) {
   EXPECT_NEAR(e.rms_residual, 0.04, 1e-3);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 ReflectorDetection detection_at(double x, double y, int64_t utime) {
   ReflectorDetection d;
@@ -70,5 +70,5 @@ TEST(MotionCompensation, OffsetMountSeesTheLeverArmOfARotation) {
   EXPECT_NEAR(side.y, -0.1, 1e-12);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::vector<ReflectorDetection> one_detection(int64_t utime) {
   ReflectorDetection d;
@@ -56,5 +56,5 @@ TEST(MotionCompensator, DisabledNeverCompensatesNorCountsMissingOdometry) {
   EXPECT_EQ(got[0].laser_p_center, Eigen::Vector2d(3.0, 1.0));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

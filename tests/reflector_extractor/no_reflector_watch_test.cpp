@@ -9,7 +9,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 1'000'000;
 constexpr int64_t kScanPeriod_us = 20'000;  // 50 Hz
@@ -108,5 +108,5 @@ TEST_F(NoReflectorNode, WithAutoScaleTheSameStreamFindsTheReflectorAndStaysOk) {
   EXPECT_EQ(counters_["rssi_scale_changes"], 1);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr double kDeg = M_PI / 180.0;
 constexpr double kRadius = 0.06;  // the paper's 120 mm reflector
@@ -142,5 +142,5 @@ TEST(PaperCentre, TheDesignedRadiusMakesTheCentreAccurateWhereTheFreeCircleIsNot
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

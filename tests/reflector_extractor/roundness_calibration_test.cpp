@@ -6,7 +6,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(RoundnessCalibration, LineFitRecoversAnExactLineAndRaisesIt) {
   std::vector<RoundnessSample> samples;
@@ -41,5 +41,5 @@ TEST(RoundnessCalibration, SimulationGivesThePapers276SetsAndSmallDBar) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

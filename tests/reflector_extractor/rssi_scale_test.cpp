@@ -9,7 +9,7 @@
 #include <cstdio>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kScanPeriod_us = 20'000;  // 50 Hz
 
@@ -143,5 +143,5 @@ TEST(RssiScaleDetector, NeedsEnoughEchoesAndLeavesEightBitSensorsAndFixedModesAl
   EXPECT_EQ(RssiScaleDetector(forced).scale(), RssiScale::k8bitIn16bit);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using testing::SyntheticSensor;
 
@@ -121,5 +121,5 @@ TEST(FitConsistency, NoFewerOkFixesOverAThousandRandomPoses) {
   EXPECT_GE(ok_with, ok_without * 99 / 100);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using testing::SyntheticSensor;
 
@@ -142,5 +142,5 @@ TEST(GlobalRelocalization, DetectionsFromNowhereAreLost) {
   EXPECT_LE(ok, 2);  // random points rarely look like five map reflectors
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

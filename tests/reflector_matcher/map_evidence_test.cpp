@@ -8,7 +8,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 ReflectorMap line_of_reflectors() {
   ReflectorMap map;
@@ -219,5 +219,5 @@ TEST(MapEvidence, ClustersBeyondTheLimitForgetTheStalest) {
   EXPECT_EQ(report.candidates.size(), 1u);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

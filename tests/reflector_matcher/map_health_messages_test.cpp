@@ -7,7 +7,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 MapHealthReport sample_report() {
   MapHealthReport r;
@@ -81,5 +81,5 @@ TEST(MapHealthMessages, CountersNameMissingMovedAndNewCandidates) {
   EXPECT_EQ(counters, expected);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

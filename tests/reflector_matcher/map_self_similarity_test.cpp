@@ -9,7 +9,7 @@
 #include <cstdio>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(MapSelfSimilarity, TheSymmetricHallLooksWhollyLikeItselfTheDemoHallAQuarter) {
   const ReflectorMap symmetric = load_reflector_map(REFLOC_SOURCE_DIR "/deploy/config/map_symmetric.json");
@@ -31,5 +31,5 @@ TEST(MapSelfSimilarity, FewerThanThreeReflectorsHaveNone) {
   EXPECT_EQ(find_map_self_similarity(map).reflectors_matched, 0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

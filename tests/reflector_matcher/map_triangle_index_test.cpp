@@ -7,7 +7,7 @@
 #include <set>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(MapTriangleIndex, IndexesEveryTriangleWithinTheSideLimits) {
   std::mt19937 rng(4);
@@ -54,5 +54,5 @@ TEST(MapTriangleIndex, ShrinksTheSideLimitToStayUnderTheCap) {
   EXPECT_GT(index.size(), 0u);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 JsonConfig doc(const char* text) { return JsonConfig(nlohmann::json::parse(text), "test.json"); }
 
@@ -59,5 +59,5 @@ TEST(MatcherConfigFile, ErrorsNameTheKey) {
   EXPECT_THROW(misspelt.reject_unknown_keys(), ConfigError);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

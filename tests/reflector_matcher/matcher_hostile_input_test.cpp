@@ -17,7 +17,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 1'700'000'000'000'000;
 constexpr int64_t kPeriod = 20'000;
@@ -198,5 +198,5 @@ TEST(FusedPoseCheck, ANonOkPoseNeedsNoCovarianceButAFinitePose) {
   EXPECT_STREQ(check_fused_pose(lost).reason, "nonfinite");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

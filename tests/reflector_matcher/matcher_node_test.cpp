@@ -8,7 +8,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 50'000'000;
 
@@ -67,5 +67,5 @@ TEST(MatcherNode, TooFewDetectionsIsLostAndDegradedWithItsDetail) {
   EXPECT_EQ(counters_of(out).at("lost_scans"), 1);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

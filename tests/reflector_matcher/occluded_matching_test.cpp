@@ -9,7 +9,7 @@
 #include <cstring>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 MapOccluder wall(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   MapOccluder o;
@@ -201,5 +201,5 @@ TEST(OccludedMatching, AmongRacksTheRacksInTheMapRaiseTheTruePosesScoreAndCostNo
   EXPECT_GT(score_gain / both_ok, 0.1);  // 0.163 measured
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 MapOccluder polyline(std::vector<Eigen::Vector2d> points, bool closed = false) {
   MapOccluder o;
@@ -118,5 +118,5 @@ TEST(LineOfSight, TheCacheAnswersPerPositionAndNothingIsHiddenWithoutOccluders) 
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

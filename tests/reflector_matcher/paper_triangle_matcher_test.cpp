@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 MatcherConfig paper_config() {
   MatcherConfig c;
@@ -76,5 +76,5 @@ TEST(PaperTriangleMatcher, MatchesAMirroredScanBecauseItsSignatureIsMirrorInvari
   EXPECT_NE(result.status, MatchStatus::kOk);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <limits>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 50'000'000;
 const Pose2 kMount{0.2, 0.1, 0.0};
@@ -164,5 +164,5 @@ TEST(PriorSelector, AnInitialPoseNoScanConfirmsExpiresOnceAndTheUsualOrderReturn
   EXPECT_EQ(s.take_initial_pose_event(), InitialPoseEvent::kNone);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(RigidFit2d, RecoversAnExactTransformFromThreePoints) {
   const Pose2 b_T_a{3.0, -2.0, 2.5};
@@ -43,5 +43,5 @@ TEST(RigidFit2d, RefusesFewerThanTwoPointsOrCoincidentPoints) {
   EXPECT_FALSE(fit.solve(solved));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

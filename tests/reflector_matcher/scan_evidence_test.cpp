@@ -8,7 +8,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 // A 270 deg scan at 0.5 deg with every beam at range_m.
 LaserScan wall_scan(double range_m) {
@@ -112,5 +112,5 @@ TEST(ScanEvidenceBuilder, UnseenReflectorCountsOnlyWithAClearLineOfSight) {
   EXPECT_EQ(map.reflectors[static_cast<size_t>(evidence.expected_unseen[0])].id, 4);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kT0 = 50'000'000;
 constexpr int64_t kScan = 20'000;
@@ -47,5 +47,5 @@ TEST(StartupRelocalization, ZeroWindowTracksFromTheFirstScan) {
   EXPECT_TRUE(s.done());
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// A grid of columns x rows reflectors, spacing dx, dy: symmetric under a 180 deg turn.
 ReflectorMap grid_layout(int columns, int rows, double dx, double dy) {
@@ -93,5 +93,5 @@ TEST(SymmetricLayout, OneExtraReflectorBreaksTheSymmetry) {
   EXPECT_FALSE(testing::is_wrong_ok(result, scan, map, truth));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(TrackingAssociation, CorrectUnderPriorErrorOfTwentyCentimetresAndThreeDegrees) {
   std::mt19937 rng(11);
@@ -76,5 +76,5 @@ TEST(TrackingAssociation, IgnoresASpuriousDetectionFarFromEveryReflector) {
     EXPECT_NE(m.detection_index, static_cast<int>(scan.detections.size()) - 1);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::array<Eigen::Vector2d, 3> moved(const std::array<Eigen::Vector2d, 3>& p, const Pose2& t) {
   return {t * p[0], t * p[1], t * p[2]};
@@ -87,5 +87,5 @@ TEST(SortedSides, InvariantUnderRigidMotion) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

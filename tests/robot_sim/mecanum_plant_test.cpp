@@ -9,7 +9,7 @@
 #include <limits>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kStart = 1'000'000;
 
@@ -121,5 +121,5 @@ TEST(EncoderModel, CountsAreWholeTicksAndWrapAsInt32) {
   EXPECT_EQ(counts[3], std::numeric_limits<int32_t>::min() + 16383);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <thread>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(PoseHistory, InterpolatesBetweenSamplesAndClampsOutside) {
   PoseHistory history(4);
@@ -42,5 +42,5 @@ TEST(PoseHistory, ConcurrentWriterAndReaderSeeConsistentPoses) {
   writer.join();
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

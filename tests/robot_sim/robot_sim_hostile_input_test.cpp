@@ -13,7 +13,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kStart = 1'000'000;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -71,5 +71,5 @@ TEST(RobotSimHostileInput, AFastButSaneCommandIsSaturatedByTheWheelsNotRefused) 
   EXPECT_FALSE(node.on_command({11.0 * reach, 0.0, 0.0}, kStart + 160'000));  // beyond 10x: absurd
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <limits>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kStart = 1'000'000;
 
@@ -95,5 +95,5 @@ TEST(RobotSimNode, EncoderTicksStartAtTheConfiguredCount) {
   for (const int32_t t : sample.ticks) EXPECT_EQ(t, 2'147'000'000);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const std::string kDeployed = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/robot_sim.json";
 
@@ -45,5 +45,5 @@ TEST(SimSetup, NoFileGivesTheDefaultsWithoutALaser) {
   EXPECT_DOUBLE_EQ(s.ground_truth_rate, 100.0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::shared_ptr<const std::string> text(const std::string& s) {
   return std::make_shared<const std::string>(s);
@@ -56,5 +56,5 @@ TEST(RateDecimator, AnyStampIsSafeAndALogStartedAgainRestartsIt) {
   EXPECT_TRUE(rate.accept(100'000));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 RequestValidator validator(bool enabled) {
   ConsoleControlConfig control;
@@ -100,5 +100,5 @@ TEST(OriginRule, AnotherSiteAnotherPortOrNullIsRefused) {
   EXPECT_EQ(judge_origin("http://127.0.0.1:8080", "", {}), OriginVerdict::kRefused);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 WebConsoleConfig parse(const std::string& text) {
   const JsonConfig config = JsonConfig::parse_text(text, "web_console.json");
@@ -53,5 +53,5 @@ TEST(WebConsoleConfig, BadValuesAreRefusedNamingTheKey) {
   EXPECT_NE(error_of(R"({"sever": {}})").find("sever"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 nlohmann::json parsed(const ConsoleFrame& frame) { return nlohmann::json::parse(*frame.text); }
 
@@ -185,5 +185,5 @@ TEST(ConsoleModel, EachServicesHeartbeatIsKeptUnderItsOwnName) {
   EXPECT_EQ(parsed(model.on_map_health(health))["reflectors"][0]["state"], "missing");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -15,7 +15,7 @@
 #include <thread>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 int connect_to(uint16_t port, int receive_buffer_bytes = 0) {
   const int fd = socket(AF_INET, SOCK_STREAM, 0);
@@ -106,5 +106,5 @@ TEST_F(ConsoleServerTest, OneClientOverTheLimitIsRefused) {
   close(second);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace refloc::sim {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const std::string kConfigDir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/";
 
@@ -83,5 +83,5 @@ TEST(BeamCandidateIndex, KeepsFewCandidatesPerBeamInTheDemoHall) {
   EXPECT_LT(per_beam, 0.25 * everything) << per_beam << " of " << everything;
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc::sim

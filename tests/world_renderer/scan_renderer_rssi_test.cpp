@@ -11,7 +11,7 @@
 #include <numeric>
 
 namespace refloc::sim {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using namespace render_test;
 
@@ -123,5 +123,5 @@ TEST(ScanRenderer, EightBitRssiPassesThePaperThresholdOnReflectorsOnly) {
   EXPECT_GE(scan.rssi[270], 180);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc::sim

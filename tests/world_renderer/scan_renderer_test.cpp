@@ -10,7 +10,7 @@
 #include <numeric>
 
 namespace refloc::sim {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using namespace render_test;
 
@@ -238,5 +238,5 @@ TEST(ScanRenderer, SameSeedSameScanOtherSeedOtherNoise) {
   EXPECT_NE(a.ranges, c.ranges);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc::sim

@@ -12,7 +12,7 @@
 #include <vector>
 
 namespace refloc::sim {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using namespace render_test;
 
@@ -148,5 +148,5 @@ TEST(SystematicRangeError, ConfigKeysAreReadAndChecked) {
   EXPECT_NE(message_of(R"({"range_scale_ppm": 1e6})").find("bad.json"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc::sim

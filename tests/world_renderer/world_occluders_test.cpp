@@ -6,7 +6,7 @@
 #include <string>
 
 namespace refloc::sim {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(WorldOccluders, DemoHallGivesItsWallAndFourObstaclesAsClosedPolylinesAndNoDistractor) {
   const World world = load_world(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/world_demo.json");
@@ -39,5 +39,5 @@ TEST(WorldOccluders, OpenPolylinesStayOpenAndADistractorBetweenWallsSplitsNothin
   EXPECT_TRUE(world_occluders(World{}).empty());
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc::sim

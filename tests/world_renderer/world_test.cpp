@@ -13,7 +13,7 @@
 #include <set>
 
 namespace refloc::sim {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::AllOf;
 using ::testing::HasSubstr;
@@ -278,5 +278,5 @@ TEST_F(WorldLoaderErrors, RenderConfigErrorsNameTheirPointer) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc::sim

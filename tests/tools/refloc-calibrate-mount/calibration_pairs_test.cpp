@@ -6,7 +6,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(CalibrationPairs, WindowsAreConsecutiveAndCloseOnTranslationRotationOrTime) {
   std::vector<TimedPose> fixes;
@@ -73,5 +73,5 @@ TEST(CalibrationPairs, WheelAngleDeltaUndoesTheInt32Wrap) {
   EXPECT_EQ(angle[3], 0.0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr double kDeg = M_PI / 180.0;
 
@@ -108,5 +108,5 @@ TEST(MountCalibration, RefusesADriveWithoutStraightLegsNamingWhy) {
   EXPECT_NE(r.message.find("straight legs"), std::string::npos) << r.message;
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

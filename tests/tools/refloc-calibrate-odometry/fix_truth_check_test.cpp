@@ -5,7 +5,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 // Fixes that are the truth expanded by 0.04 % about a point and shifted by 1 mm:
 // the similarity fit gives back exactly that, with the configured and true mounts undone.
@@ -44,5 +44,5 @@ TEST(FixTruthCheck, FixesWithoutTruthAroundThemAreLeftOut) {
   EXPECT_EQ(compare_fixes_with_truth(fixes, truth, Pose2{}, Pose2{}).fixes, 1u);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 OdometryCalibrationResult solve_drive(const test::SyntheticDriveSpec& spec) {
   const CalibrationDrive drive = test::make_synthetic_drive(spec);
@@ -87,5 +87,5 @@ TEST(OdometryCalibration, RefusesADriveThatDoesNotTurn) {
   EXPECT_NE(r.message.find("not observable"), std::string::npos) << r.message;
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

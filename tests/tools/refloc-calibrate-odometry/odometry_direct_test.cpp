@@ -6,7 +6,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 OdometryCalibrationResult solve_exact(const test::SyntheticDriveSpec& spec, double segment_s) {
   const CalibrationDrive drive = test::make_synthetic_drive(spec);
@@ -79,5 +79,5 @@ TEST(OdometryCalibrationExact, RefusesADriveThatDoesNotTurnEnough) {
   EXPECT_NE(r.message.find("not observable"), std::string::npos) << r.message;
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -9,7 +9,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::vector<double> sorted_0_to_100() {
   std::vector<double> v;
@@ -98,5 +98,5 @@ TEST(RssiCalibrationLabels, BeamsOnTheExtractedCylinderAreReflectorBeamsTheWallI
   EXPECT_GT(samples.size() - static_cast<size_t>(on), 50u);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

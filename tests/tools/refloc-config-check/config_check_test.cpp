@@ -11,7 +11,7 @@
 #include <fstream>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -62,5 +62,5 @@ TEST(ConfigCheckLibrary, MatcherConfigAlsoChecksItsMap) {
               HasSubstr("bad_map.json: /reflectors/1: reflector id 2 is 0.000 m from id 1"));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

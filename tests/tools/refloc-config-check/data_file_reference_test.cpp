@@ -14,7 +14,7 @@
 #include <regex>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const std::string kConfigDir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/";
 
@@ -47,5 +47,5 @@ TEST(DataFileReference, ShippedDemoFilesUseOnlyKeysOfTheTable) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -13,7 +13,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -80,5 +80,5 @@ TEST(ConfigCheckTool, NoMapIsAUsageError) {
   EXPECT_THAT(r.output, HasSubstr("--map"));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -21,7 +21,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -182,5 +182,5 @@ TEST(HostileFiles, ColinearMapWarnsAndFailsOnlyWhenStrict) {
                          path, "all 4 reflectors lie within");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr double kRadius = 0.06;
 
@@ -105,5 +105,5 @@ TEST(BeamRangeCrlb, FewerThanThreeBeamsGiveNoBound) {
   EXPECT_FALSE(beam_range_crlb(map, Pose2{}, Pose2{}, beams, 0.012, BeamSpotModel{}).has_value());
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

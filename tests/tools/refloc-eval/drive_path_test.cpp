@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// The pose dt later by holding the state's body twist (exact on a leg and inside a corner).
 Pose2 advanced(const DriveState& s, double dt) { return s.map_T_robot * se2_exp(s.twist, dt); }
@@ -50,5 +50,5 @@ TEST(DrivePath, CornersTurnAtSpeedOverRadiusWhenFacingTheWayDriven) {
   EXPECT_DOUBLE_EQ(up_the_right_leg.map_T_robot.theta, 0.0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -10,7 +10,7 @@
 #include <cstdio>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const std::string kConfig = std::string(REFLOC_SOURCE_DIR) + "/deploy/config";
 
@@ -56,5 +56,5 @@ TEST(DriveStudy, FixesCompensateLikeOdometryAndWithoutCompensationTheFixesLeadTh
   EXPECT_GT(none.consistency.position_nees_mean, fixes.consistency.position_nees_mean + 0.5);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -15,7 +15,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(OccluderSight, NoReflectorTheRendererLightsIsHiddenAndFewInPlainViewGetNoBeam) {
   const sim::World world = sim::load_world(std::string(REFLOC_SOURCE_DIR) + "/deploy/config/world_demo.json");
@@ -61,5 +61,5 @@ TEST(OccluderSight, NoReflectorTheRendererLightsIsHiddenAndFewInPlainViewGetNoBe
   EXPECT_LT(table[clear][0], table[clear][2] / 200);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -16,7 +16,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const std::string kConfig = std::string(REFLOC_SOURCE_DIR) + "/deploy/config";
 
@@ -133,5 +133,5 @@ TEST(PaperCentreStudy, DISABLED_RandomPosesPerReading) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -11,7 +11,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const std::string kConfigDir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config/";
 
@@ -61,5 +61,5 @@ TEST(StudyMap, TheBoundIsTheWorldsWhateverIdsTheLoadedMapGivesItsReflectors) {
   EXPECT_LT(with_other_ids.default_mode.crlb_rmse_mm, 10.0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(ExportCounts, JsonlAndCsvCountsAndFiles) {
   LogExportRequest request;
@@ -39,5 +39,5 @@ TEST(ExportCounts, NothingExportedPrintsNothing) {
   EXPECT_EQ(format_export_counts(LogExportRequest{}, LogExportResult{}), "");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -13,7 +13,7 @@
 #include <refloc/reflector_matches_t.hpp>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using testing::kT0;
 
@@ -188,5 +188,5 @@ TEST(LoadScanContinuity, OffUnlessAsked) {
   EXPECT_FALSE(analyze_log(write_scan_log(), LogAnalysisOptions{}, decoder).scans.has_value());
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

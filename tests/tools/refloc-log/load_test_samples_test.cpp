@@ -11,7 +11,7 @@
 #include <sstream>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -75,5 +75,5 @@ TEST(LoadTestSamples, DurationsAndAProcessAreRequired) {
   EXPECT_THAT(error_of("duration_s 1\nmeasured_s 1\n"), HasSubstr("samples.txt: no process record"));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -11,7 +11,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 ServiceHealth healthy(const std::string& name) {
   ServiceHealth h;
@@ -176,5 +176,5 @@ TEST(LoadVerdict, TextReportEndsInTheVerdictAndListsEveryProgram) {
   EXPECT_EQ(text.substr(text.size() - 5), "FAIL\n");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

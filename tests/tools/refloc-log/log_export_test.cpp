@@ -10,7 +10,7 @@
 #include <refloc/pose2d_t.hpp>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using testing::kT0;
 
@@ -163,5 +163,5 @@ TEST(LogExport, CsvPathPerChannel) {
   EXPECT_EQ(csv_path_for_channel("out.d/x", "A/B", false), "out.d/x_A_B");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -11,7 +11,7 @@
 #include <refloc/twist_t.hpp>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using testing::kT0;
 
@@ -159,5 +159,5 @@ TEST(LogReader, EmptyLogHasNoEvents) {
   EXPECT_EQ(format_log_summary(s), "empty log: no events\n");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

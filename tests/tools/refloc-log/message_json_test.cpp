@@ -24,7 +24,7 @@
 #include <refloc/wheel_encoders_t.hpp>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 template <class Message>
 std::vector<uint8_t> encode(const Message& m) {
@@ -156,5 +156,5 @@ TEST(CsvFlatten, QuotesCellsWithCommasQuotesAndNewlines) {
   EXPECT_EQ(csv_line({"a", "b,c", "say \"hi\"", "x\ny", ""}), "a,\"b,c\",\"say \"\"hi\"\"\",\"x\ny\",");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

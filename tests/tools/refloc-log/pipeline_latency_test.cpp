@@ -13,7 +13,7 @@
 #include <refloc/reflector_matches_t.hpp>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using testing::kT0;
 
@@ -133,5 +133,5 @@ TEST(LatencyStats, PercentilesOfKnownSamples) {
   EXPECT_DOUBLE_EQ(s.mean_ms, 500.5);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

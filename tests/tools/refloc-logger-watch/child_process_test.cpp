@@ -9,7 +9,7 @@
 #include <thread>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 /// Poll until the child ended (generous bound: this is no timing test).
 void wait_exit(ChildProcess& child) {
@@ -67,5 +67,5 @@ TEST(DescribeWaitStatus, ExitCodesAndSignals) {
   EXPECT_EQ(describe_wait_status(SIGKILL), "killed by signal 9 (Killed)");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int8_t kOk = 1;
 constexpr int8_t kError = 3;
@@ -92,5 +92,5 @@ TEST(LoggerHealth, RotationToANewSmallerFileCountsAsGrowth) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -16,7 +16,7 @@
 #include <filesystem>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -151,5 +151,5 @@ TEST(ReflocMapUpdateCli, DryRunListsThenUpdateWritesTheNextVersionFromTheLastMes
   EXPECT_THAT(r.output, HasSubstr("no OTHER message"));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -12,7 +12,7 @@
 #include <fstream>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -77,5 +77,5 @@ TEST(ReflocMapCli, ExitCodesAndNoSilentOverwrite) {
   EXPECT_THAT(r.output, HasSubstr("map yard version 1"));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

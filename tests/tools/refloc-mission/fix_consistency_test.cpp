@@ -9,7 +9,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 Eigen::Matrix3d correlated_covariance() {
   Eigen::Matrix3d p;
@@ -75,5 +75,5 @@ TEST(FixConsistency, UnusableCovariancesAreCountedNotAveraged) {
   EXPECT_EQ(ConsistencyAccumulator().summary().fixes, 0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -10,7 +10,7 @@
 #include <fstream>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -75,5 +75,5 @@ TEST(MissionFile, ErrorsNameFileAndKey) {
   EXPECT_THAT(error_of(typo), HasSubstr("timeout"));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 using ::testing::Not;
@@ -223,5 +223,5 @@ TEST(MissionMonitor, TraceHasTruthEstimatesWithTheirErrorsAndWaypointArrivals) {
   EXPECT_DOUBLE_EQ(trace.waypoints[1].target.x, 2.0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kS = 1'000'000;
 
@@ -86,5 +86,5 @@ TEST(MissionProgress, AbortEndsTheMission) {
   EXPECT_FALSE(p.needs_send(10 * kS));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

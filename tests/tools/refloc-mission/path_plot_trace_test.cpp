@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(PathTraceCsv, RowsPerSampleAndWaypointWithTimesFromTheStartAndErrorsInMm) {
   PathTrace trace;
@@ -26,5 +26,5 @@ TEST(PathTraceCsv, UnwritablePathIsReported) {
   EXPECT_FALSE(write_path_trace_csv("/nonexistent-dir/trace.csv", PathTrace{}));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

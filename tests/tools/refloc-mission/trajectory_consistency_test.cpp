@@ -10,7 +10,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 constexpr int64_t kTruthPeriodUs = 10'000;  // GROUND_TRUTH at 100 Hz, as robot_sim sends it
 
@@ -106,5 +106,5 @@ TEST(TrajectoryCompare, TheMovingMaximumLeavesOutTheRobotStandingStill) {
   EXPECT_NEAR(stats.max_xy_moving_m, 0.004, 1e-12);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(MotorBridgeConfigFile, AnEmptyFileGivesTheDefaults) {
   const JsonConfig file(nlohmann::json::object(), "bridge.json");
@@ -25,5 +25,5 @@ TEST(MotorBridgeConfigFile, AnOutOfRangeTimeoutNamesFileAndKey) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -7,7 +7,7 @@
 #include <limits>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 RobotConfig robot() { return RobotConfig{}; }  // the deployed robot.json's values are the defaults
 
@@ -75,5 +75,5 @@ TEST(StubMotorController, CountsTicksAtTheSetSpeedAndWrapsAsInt32) {
   EXPECT_EQ(static_cast<int64_t>(ticks[3]), 2147483000LL + 8192 - 4294967296LL);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

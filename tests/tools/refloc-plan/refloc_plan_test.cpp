@@ -21,7 +21,7 @@
 #include <fstream>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -272,5 +272,5 @@ TEST(RefLocPlanCli, BadInputGivesOneLineAndAnExitCode) {
   EXPECT_THAT(broken.output, HasSubstr(bad));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -7,7 +7,7 @@
 #include <refloc/heartbeat_t.hpp>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 HeartbeatSample beat(const std::string& service, int32_t pid, double t_s, int64_t in, int64_t out) {
   HeartbeatSample s;
@@ -153,5 +153,5 @@ TEST(HeartbeatStateName, MatchesHeartbeatTypeConstants) {
   EXPECT_EQ(heartbeat_state_name(9), "STATE_9");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -9,7 +9,7 @@
 #include <cmath>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 PoseSample pose_with_covariance(double var_x, double var_y, double cov_xy, double var_theta) {
   PoseSample p;
@@ -68,5 +68,5 @@ TEST(PoseStatusName, MatchesPoseTypeConstants) {
   EXPECT_EQ(pose_status_name(9), "STATUS_9");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

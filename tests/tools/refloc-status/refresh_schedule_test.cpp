@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(RefreshSchedule, OncePrintsASingleTimeAfterTheWait) {
   RefreshSchedule s(10.0, true, 3.0);
@@ -35,5 +35,5 @@ TEST(RefreshSchedule, AStallDoesNotPrintInABurst) {
   EXPECT_DOUBLE_EQ(s.seconds_until_due(7.0), 0.0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -12,7 +12,7 @@
 #include <vector>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 HeartbeatSample beat(int32_t pid, double t_s, int64_t start_utime, int8_t state = 1,
                      const std::string& detail = "") {
@@ -100,5 +100,5 @@ TEST(ServiceInstancesRows, BackToOneRowWhenTheSecondStopsSending) {
   EXPECT_EQ(heartbeat_state_name(rows[0].last.state), "OK");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

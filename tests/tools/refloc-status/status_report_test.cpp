@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 std::vector<ServiceStatus> sample_rows() {
   HeartbeatTable table;
@@ -89,5 +89,5 @@ TEST(StatusReport, JsonCarriesThePose) {
   EXPECT_DOUBLE_EQ(doc["pose"]["fixes_ok_per_s"].get<double>(), 9.5);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -12,7 +12,7 @@
 #include <sstream>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 HeartbeatSample beat(const std::string& service, int32_t pid, int8_t state, const std::string& detail,
                      NamedCounters counters) {
@@ -173,5 +173,5 @@ TEST(CounterKind, NormalWorkIsListedEverythingElseIsAnError) {
   EXPECT_EQ(error_kinds(4, {{"reconnects", 1}, {"lcm_recv_buf_clamped_to_bytes", 212992}, {"scans", 9}}), 3);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -11,7 +11,7 @@
 #include <string>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 // Captured on Linux 6.18 in a network namespace after 20 datagrams of 1000 bytes were sent to
 // a socket with a 4 kB receive buffer on 239.255.76.67:7667: 17 dropped.
@@ -162,5 +162,5 @@ TEST(UdpDropReport, ReadsAProcTreeAndFindsTheHolderThroughItsFds) {
   std::system(("rm -rf " + root).c_str());
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -20,7 +20,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 TEST(LandmarkTrack, ScatterWithTheRangeOffsetTakenOffIsTheCorrectedSightings) {
   // A centre at (5, 5) seen from all around with every range 30 mm long.
@@ -201,5 +201,5 @@ TEST(SurveyMapWarnings, ASymmetricLayoutIsWrittenWithAWarningTheDemoHallWithout)
   EXPECT_EQ(self_similar_map_warning(load_reflector_map(dir + "map_demo_v2.json")), "");
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -18,7 +18,7 @@
 #include <regex>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const std::string kSurvey = std::string(REFLOC_BINARY_DIR) + "/bin/refloc-survey";
 
@@ -126,5 +126,5 @@ TEST(SurveyDriveCli, BadInputExits2AndABadCommandLine64) {
   EXPECT_EQ(testing::run_command(kSurvey + " drive --help").exit_code, 0);
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

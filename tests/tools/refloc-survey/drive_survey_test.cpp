@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using testing::RenderedDrive;
 
@@ -114,5 +114,5 @@ TEST(DriveSurvey, AnchorsMoveTheFrameOntoTheirCoordinates) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

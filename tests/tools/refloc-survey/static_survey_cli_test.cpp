@@ -15,7 +15,7 @@
 #include <fstream>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using ::testing::HasSubstr;
 
@@ -103,5 +103,5 @@ TEST(StaticSurveyCli, ExitCodesAndWarnings) {
   EXPECT_FALSE(std::filesystem::exists(out + "5"));
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -13,7 +13,7 @@
 #include <random>
 
 namespace refloc {
-namespace {
+namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 using testing::rendered_static_survey;
 using testing::RenderedSurvey;
@@ -203,5 +203,5 @@ TEST(StaticSurveyRendered, DISABLED_StudyOfTheFloorOverRandomPoses) {
   }
 }
 
-}  // namespace
+}  // namespace REFLOC_UNITY_ID
 }  // namespace refloc
