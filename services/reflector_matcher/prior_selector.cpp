@@ -19,6 +19,13 @@ PriorSelector::PriorSelector(const PriorSelectionConfig& config, const Pose2& ro
       max_age_us_(static_cast<int64_t>(config.max_age * 1e6)),
       startup_(config.relocalize_on_start) {}
 
+PriorChoice PriorSelector::own_pose_prior() const {
+  const double sxy2 = config_.own_sigma_xy * config_.own_sigma_xy;
+  const double st2 = config_.own_sigma_theta * config_.own_sigma_theta;
+  return {PriorSource::kOwnPose,
+          PosePrior{last_own_ok_->second, Eigen::Vector3d(sxy2, sxy2, st2).asDiagonal()}};
+}
+
 PriorChoice PriorSelector::select(int64_t scan_utime) {
   startup_was_done_ = startup_.done();
   PriorChoice choice;
@@ -36,20 +43,14 @@ PriorChoice PriorSelector::select(int64_t scan_utime) {
   }
   const bool own_fresh = last_own_ok_ && std::llabs(scan_utime - last_own_ok_->first) <= max_age_us_;
   if (scan_utime <= own_preferred_until_utime_ && own_fresh) {
-    const double sxy2 = config_.own_sigma_xy * config_.own_sigma_xy;
-    const double st2 = config_.own_sigma_theta * config_.own_sigma_theta;
-    choice.source = PriorSource::kOwnPose;
-    choice.prior = PosePrior{last_own_ok_->second, Eigen::Vector3d(sxy2, sxy2, st2).asDiagonal()};
+    choice = own_pose_prior();
   } else if (!startup_.prior_allowed(scan_utime)) {
     choice.source = PriorSource::kStartupWindow;
   } else if (last_pose_ && last_pose_->ok && std::llabs(scan_utime - last_pose_->utime) <= max_age_us_) {
     choice.source = PriorSource::kFusedPose;
     choice.prior = prior_from_robot_pose(*last_pose_, robot_T_laser_);
   } else if (config_.use_own_pose && own_fresh) {
-    const double sxy2 = config_.own_sigma_xy * config_.own_sigma_xy;
-    const double st2 = config_.own_sigma_theta * config_.own_sigma_theta;
-    choice.source = PriorSource::kOwnPose;
-    choice.prior = PosePrior{last_own_ok_->second, Eigen::Vector3d(sxy2, sxy2, st2).asDiagonal()};
+    choice = own_pose_prior();
   }
   last_source_ = choice.source;
   return choice;

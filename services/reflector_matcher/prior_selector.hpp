@@ -84,6 +84,9 @@ class PriorSelector {
   }
 
  private:
+  /// The own last OK pose with the configured sigmas (last_own_ok_ must be set).
+  PriorChoice own_pose_prior() const;
+
   PriorSelectionConfig config_;
   Pose2 robot_T_laser_;
   int64_t max_age_us_;
