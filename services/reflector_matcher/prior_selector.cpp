@@ -26,6 +26,21 @@ PriorChoice PriorSelector::own_pose_prior() const {
           PosePrior{last_own_ok_->second, Eigen::Vector3d(sxy2, sxy2, st2).asDiagonal()}};
 }
 
+void PriorSelector::on_pose(const FusedPose& pose) {
+  recent_poses_.push_back(pose);
+  if (recent_poses_.size() > kRecentPoses) recent_poses_.pop_front();
+}
+
+const FusedPose* PriorSelector::pose_for_scan(int64_t scan_utime) const {
+  const FusedPose* before = nullptr;
+  const FusedPose* earliest = nullptr;
+  for (const FusedPose& p : recent_poses_) {
+    if (p.utime <= scan_utime && (before == nullptr || p.utime >= before->utime)) before = &p;
+    if (earliest == nullptr || p.utime < earliest->utime) earliest = &p;
+  }
+  return before != nullptr ? before : earliest;
+}
+
 PriorChoice PriorSelector::select(int64_t scan_utime) {
   startup_was_done_ = startup_.done();
   PriorChoice choice;
@@ -46,9 +61,10 @@ PriorChoice PriorSelector::select(int64_t scan_utime) {
     choice = own_pose_prior();
   } else if (!startup_.prior_allowed(scan_utime)) {
     choice.source = PriorSource::kStartupWindow;
-  } else if (last_pose_ && last_pose_->ok && std::llabs(scan_utime - last_pose_->utime) <= max_age_us_) {
+  } else if (const FusedPose* pose = pose_for_scan(scan_utime);
+             pose != nullptr && pose->ok && std::llabs(scan_utime - pose->utime) <= max_age_us_) {
     choice.source = PriorSource::kFusedPose;
-    choice.prior = prior_from_robot_pose(*last_pose_, robot_T_laser_);
+    choice.prior = prior_from_robot_pose(*pose, robot_T_laser_);
   } else if (config_.use_own_pose && own_fresh) {
     choice = own_pose_prior();
   }

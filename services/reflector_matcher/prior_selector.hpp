@@ -2,7 +2,11 @@
 // Which prior the matcher tracks from, per scan:
 //  1. none during the startup window (StartupRelocalization: relocalize on its own first);
 //  2. the fused POSE when its status is OK and it is fresh (|POSE utime - scan utime| <=
-//     max_age), map_T_robot composed with the mount and its covariance propagated through it;
+//     max_age), map_T_robot composed with the mount and its covariance propagated through it.
+//     Which POSE: the newest stamped at or before the scan (else the earliest after it), not
+//     the last to arrive: REFLECTORS reach the matcher after the extractor's work, POSE straight
+//     from fusion or a log, so the last arrival depends on timing and a replay of the same log
+//     would track from different priors;
 //  3. else the matcher's own last OK map_T_laser when fresh, with the configured sigmas;
 //  4. else none (global relocalization).
 // Before all of these, an INITIAL_POSE (a user's "the robot is here", e.g. from the web
@@ -21,6 +25,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <optional>
 
 namespace refloc {
@@ -66,7 +71,7 @@ class PriorSelector {
  public:
   PriorSelector(const PriorSelectionConfig& config, const Pose2& robot_T_laser);
 
-  void on_pose(const FusedPose& pose) { last_pose_ = pose; }
+  void on_pose(const FusedPose& pose);
   /// A user's pose (status ignored; its covariance taken as given, the matcher's floors apply).
   void on_initial_pose(const FusedPose& pose) {
     initial_ = pose;
@@ -86,13 +91,17 @@ class PriorSelector {
  private:
   /// The own last OK pose with the configured sigmas (last_own_ok_ must be set).
   PriorChoice own_pose_prior() const;
+  /// Of the recent POSE, the newest stamped at or before scan_utime, else the earliest; null if none.
+  const FusedPose* pose_for_scan(int64_t scan_utime) const;
+  /// POSE come at up to 100 Hz; prior_max_age_s is 0.5 s by default: room for 0.64 s of them.
+  static constexpr size_t kRecentPoses = 64;
 
   PriorSelectionConfig config_;
   Pose2 robot_T_laser_;
   int64_t max_age_us_;
   StartupRelocalization startup_;
   bool startup_was_done_ = false;
-  std::optional<FusedPose> last_pose_;
+  std::deque<FusedPose> recent_poses_;                    ///< in arrival order, at most kRecentPoses
   std::optional<std::pair<int64_t, Pose2>> last_own_ok_;  ///< scan utime, map_T_laser
   std::optional<FusedPose> initial_;
   std::optional<int64_t> initial_first_scan_utime_;

@@ -51,6 +51,25 @@ TEST(PriorSelector, FreshOkPoseGivesTheMountComposedPriorWithTheCovariancePropag
   EXPECT_NEAR(c.prior->covariance(2, 2), 0.0004, 1e-15);
 }
 
+TEST(PriorSelector, ThePoseStampedAtOrBeforeTheScanIsThePriorWhateverTheArrivalOrder) {
+  FusedPose later = fused(kT0 + 30'000);
+  later.map_T_robot.x = 5.03;
+  for (const bool later_first : {false, true}) {
+    PriorSelector s(no_startup_window(), kMount);
+    if (later_first) s.on_pose(later);
+    s.on_pose(fused(kT0 - 10'000));
+    s.on_pose(fused(kT0));
+    if (!later_first) s.on_pose(later);
+    const PriorChoice c = s.select(kT0 + 20'000);
+    ASSERT_EQ(c.source, PriorSource::kFusedPose) << later_first;
+    EXPECT_NEAR(c.prior->map_T_laser.x, 4.9, 1e-12) << later_first;  // from the POSE at kT0
+  }
+  PriorSelector only_later(no_startup_window(), kMount);
+  only_later.on_pose(later);
+  EXPECT_NEAR(only_later.select(kT0).prior->map_T_laser.x, 4.93,
+              1e-12);  // nothing earlier: the earliest after
+}
+
 TEST(PriorSelector, NonFiniteFusedCovarianceBecomesZeroSoTheMatcherFloorsTakeOver) {
   FusedPose p = fused(kT0);
   p.covariance(0, 0) = std::numeric_limits<double>::quiet_NaN();
