@@ -40,12 +40,14 @@ LayoutPlan plan_layout(const ReflectorMap& map, const PlanGrid& grid, const Plan
         cell.sigma_xy_max = std::max(cell.sigma_xy_max, p.sigma_xy);
         cell.sigma_theta_max = std::max(cell.sigma_theta_max, p.sigma_theta);
       }
-      if (p.relocalization == Relocalization::kLost) ++cell.headings_lost;
+      const bool no_fix =
+          p.relocalization == Relocalization::kLost || p.relocalization == Relocalization::kNoPose;
+      if (no_fix) ++cell.headings_lost;
       if (p.relocalization == Relocalization::kUnique) ++cell.headings_unique;
-      cell.headings_bad +=
-          p.visible < config.matcher.min_matches || p.relocalization == Relocalization::kLost ||
-          p.relocalization == Relocalization::kAmbiguous || p.relocalization == Relocalization::kWrong ||
-          !p.has_bound || p.sigma_xy > config.crlb_limit;
+      cell.headings_bad += p.visible < config.matcher.min_matches || no_fix ||
+                           p.relocalization == Relocalization::kAmbiguous ||
+                           p.relocalization == Relocalization::kWrong || !p.has_bound ||
+                           p.sigma_xy > config.crlb_limit;
       if (p.relocalization == Relocalization::kAmbiguous || p.relocalization == Relocalization::kWrong) {
         if (!cell.has_rival) {
           cell.has_rival = true;

@@ -24,7 +24,10 @@ const char* to_string(PoseOutcome outcome) {
 }
 
 PoseOutcome predicted_outcome(const PosePrediction& p, int min_matches) {
-  if (p.visible < min_matches || p.relocalization == Relocalization::kLost) return PoseOutcome::kBlind;
+  if (p.visible < min_matches || p.relocalization == Relocalization::kLost ||
+      p.relocalization == Relocalization::kNoPose) {
+    return PoseOutcome::kBlind;
+  }
   if (p.relocalization == Relocalization::kAmbiguous || p.relocalization == Relocalization::kWrong) {
     return PoseOutcome::kAmbiguous;
   }

@@ -21,7 +21,7 @@ enum class PoseOutcome : signed char { kOk, kBlind, kAmbiguous };
 const char* to_string(PoseOutcome outcome);
 
 /// What PosePredictor's answer means as an outcome: fewer than min_matches visible or no fix
-/// (kLost) is blind, kAmbiguous and kWrong are ambiguous, kUnique is ok.
+/// (kLost, kNoPose) is blind, kAmbiguous and kWrong are ambiguous, kUnique is ok.
 PoseOutcome predicted_outcome(const PosePrediction& prediction, int min_matches);
 
 struct MeasureConfig {

@@ -11,7 +11,6 @@
 #include "common/json_config.hpp"
 #include "common/program_version.hpp"
 #include "common/robot_config.hpp"
-#include "reflector_matcher/matcher_config_file.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -27,11 +26,15 @@ PlanConfig plan_config(const PlanOptions& o) {
   c.headings = o.headings;
   c.crlb_limit = 1e-3 * o.crlb_limit_mm;
   c.range_sigma = 1e-3 * o.range_sigma_mm;
-  c.min_beams = o.min_beams;
   c.spot.samples = o.spot_samples;
   c.check_ambiguity = o.ambiguity;
   c.robot_T_laser = load_robot_config(o.robot_file).robot_T_laser;
-  c.matcher = load_matcher_service_config(o.matcher_file).matcher;
+  // The services' files read as the measurement reads them (default mode).
+  const PipelineConfigs services =
+      load_pipeline_configs(PipelineMode::kDefault, o.extractor_file, o.matcher_file, o.solver_file);
+  c.matcher = services.matcher.matcher;
+  c.extractor = services.extractor.extractor;
+  c.solver = services.solver.solver;
   return c;
 }
 

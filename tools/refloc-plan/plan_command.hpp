@@ -13,13 +13,12 @@ struct PlanOptions {
   std::string occluders = "auto";
   std::string robot_file = "deploy/config/robot.json";
   std::string matcher_file = "deploy/config/reflector_matcher.json";
-  std::string extractor_file = "deploy/config/reflector_extractor.json";  ///< --measure-cells only
-  std::string solver_file = "deploy/config/pose_solver.json";             ///< --measure-cells only
+  std::string extractor_file = "deploy/config/reflector_extractor.json";
+  std::string solver_file = "deploy/config/pose_solver.json";
   double resolution_m = 0.25;
   int headings = 8;
   double crlb_limit_mm = 10.0;
   double range_sigma_mm = 12.0;
-  double min_beams = 2.0;
   int spot_samples = 201;
   bool ambiguity = true;
   int suggest = 0;

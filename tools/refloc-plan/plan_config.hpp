@@ -3,7 +3,10 @@
 // defaults in the declaration, the deployed values where a service file sets them.
 
 #include "beam_crlb.hpp"
+#include "pose_solver/solver_config.hpp"
+#include "reflector_extractor/extractor.hpp"
 #include "reflector_matcher/matcher_config.hpp"
+#include "world_renderer/lms100_error_model.hpp"
 
 #include "common/se2.hpp"
 
@@ -23,9 +26,6 @@ struct PlanConfig {
   int headings = 8;          ///< robot headings per cell, evenly spaced from 0 [-]
   /// A cell whose worst heading's CRLB position sigma is above this counts as inaccurate [m].
   double crlb_limit = 0.010;
-  /// A reflector counts as visible with at least this many beam axes on its cylinder (the
-  /// deployed extractor's min_beams, deploy/config/reflector_extractor.json) [-].
-  double min_beams = 2.0;
   Pose2 robot_T_laser{0.30, 0.0, 0.0};  ///< laser mount (robot.json's laser_mount) [m, m, rad]
   PlanScanGeometry scan;
   double range_sigma = 0.012;  ///< LMS100 statistical range noise, 1 sigma [m]
@@ -33,6 +33,16 @@ struct PlanConfig {
   /// (1 mm steps) straddle single rays and a cell's bound moved by up to -64 % / +29 % against
   /// 201 on the demo hall (101: -18 % / +12 %).
   BeamSpotModel spot;
+
+  /// The LMS100 model (world_renderer's, the emulator's defaults): a visible reflector's beams
+  /// are traced noise-free with it for their RSSI.
+  sim::Lms100ErrorModel sensor;
+  /// The extractor as deployed (deploy/config/reflector_extractor.json): a reflector counts as
+  /// seen when at least min_beams of its beams return at or above energy_threshold_8bit.
+  ExtractorConfig extractor;
+  /// The solver as deployed (deploy/config/pose_solver.json): a relocalized pose counts only
+  /// when the solver makes a pose of the matches.
+  SolverConfig solver;
 
   /// The matcher as deployed (deploy/config/reflector_matcher.json): range, field of view,
   /// triangle index, verification and the rival rule.

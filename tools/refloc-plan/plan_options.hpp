@@ -34,12 +34,6 @@ inline void add_plan_options(CLI::App& c, PlanOptions& o) {
   c.add_option("--range-sigma-mm", o.range_sigma_mm, "LMS100 range noise per beam, 1 sigma [mm]")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 1000.0));
-  c.add_option(
-       "--min-beams", o.min_beams,
-       "beams across a cylinder, on average, for it to count as seen: 2 = 6.9 m for 120 mm at 0.5 deg "
-       "(reflector_extractor.json's min_beams) [-]")
-      ->capture_default_str()
-      ->check(CLI::Range(1.0, 100.0));
   c.add_option("--spot-samples", o.spot_samples,
                "rays across the beam spot in the CRLB (refloc-eval: 201) [-]")
       ->capture_default_str()
@@ -69,9 +63,12 @@ inline void add_plan_options(CLI::App& c, PlanOptions& o) {
       ->check(CLI::Range(1, 1000));
   c.add_option("--seed", o.seed, "random seed of the measured cells and the sensor noise")
       ->capture_default_str();
-  c.add_option("--extractor-config", o.extractor_file, "reflector_extractor config of the measurement")
+  c.add_option("--extractor-config", o.extractor_file,
+               "reflector_extractor config: energy threshold and min_beams (a reflector is seen when that "
+               "many beams are bright), and the measurement's")
       ->capture_default_str();
-  c.add_option("--solver-config", o.solver_file, "pose_solver config of the measurement")
+  c.add_option("--solver-config", o.solver_file,
+               "pose_solver config: whether the matches make a pose, and the measurement's")
       ->capture_default_str();
   c.add_option("--out-dir", o.out_dir, "folder for grid.json, summary.txt, plan.png, plan.svg")
       ->capture_default_str();

@@ -78,11 +78,13 @@ nlohmann::json reflectors_json(const ReflectorMap& map) {
 std::string plan_summary_text(const PlanReport& r) {
   const PlanConfig& c = r.config;
   std::string text = fmt::format(
-      "refloc-plan: {}\n{} reflectors, {} occluders; grid {} m, {} headings; min {} beams on a reflector; "
+      "refloc-plan: {}\n{} reflectors, {} occluders; grid {} m, {} headings; a reflector seen with {} beams "
+      "of RSSI >= {:.0f}; "
       "range {}-{} m, field of view {:.0f} deg; CRLB limit {:.1f} mm; {:.1f} s\n",
-      r.map_name, r.map.reflectors.size(), r.map.occluders.size(), c.resolution, c.headings, c.min_beams,
-      c.matcher.sensor.min_range, c.matcher.sensor.max_range, c.matcher.sensor.field_of_view * 180.0 / M_PI,
-      1e3 * c.crlb_limit, r.runtime_s);
+      r.map_name, r.map.reflectors.size(), r.map.occluders.size(), c.resolution, c.headings,
+      c.extractor.min_beams, c.extractor.energy_threshold_8bit, c.matcher.sensor.min_range,
+      c.matcher.sensor.max_range, c.matcher.sensor.field_of_view * 180.0 / M_PI, 1e3 * c.crlb_limit,
+      r.runtime_s);
   text += "area fractions (worst heading):\n" + summary_lines(r.plan.summary, c);
   if (!r.suggestions.empty()) {
     text += fmt::format("suggested reflectors ({}):\n", r.suggestions.size());
@@ -106,7 +108,8 @@ std::string plan_json_text(const PlanReport& r) {
   j["headings"] = c.headings;
   j["crlb_limit_mm"] = 1e3 * c.crlb_limit;
   j["min_matches"] = c.matcher.min_matches;
-  j["min_beams"] = c.min_beams;
+  j["min_beams"] = c.extractor.min_beams;
+  j["energy_threshold_8bit"] = c.extractor.energy_threshold_8bit;
   j["runtime_s"] = r.runtime_s;
   j["reflectors"] = reflectors_json(r.map);
   j["occluders"] = nlohmann::json::array();

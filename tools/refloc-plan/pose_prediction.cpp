@@ -17,6 +17,8 @@ const char* to_string(Relocalization r) {
       return "wrong";
     case Relocalization::kLost:
       return "lost";
+    case Relocalization::kNoPose:
+      return "no_pose";
   }
   return "?";
 }
@@ -25,7 +27,9 @@ PosePredictor::PosePredictor(ReflectorMap map, const PlanConfig& config)
     : map_(std::move(map)),
       config_(config),
       grid_(map_, 0.5 * config.matcher.sensor.max_range),  // the matcher's own cell size
-      occluders_(map_.occluders) {
+      occluders_(map_.occluders),
+      bright_beams_(map_, config),
+      solver_(config.solver, config.robot_T_laser) {
   if (config_.check_ambiguity) {
     const RelocalizationConfig& r = config_.matcher.relocalization;
     index_ =
@@ -59,12 +63,11 @@ PosePrediction PosePredictor::predict(const Pose2& map_T_robot) {
     const PredictedReflector& p = predicted_[k];
     if (!p.in_view || is_shadowed(map_, predicted_, k)) continue;
     const MapReflector& reflector = map_.reflectors[static_cast<size_t>(p.map_index)];
-    if (line_of_sight(occluders_, map_T_laser.translation(), reflector) != LineOfSight::kClear) continue;
-    // Fewer beams than the extractor needs, on average over where the beams fall: no detection,
-    // and no beams in the bound either. (Counting the beams of this very pose instead credits a
-    // far reflector that two beams happen to straddle; the extractor rarely finds those.)
+    // A partly hidden reflector may show enough bright beams: the traced beams decide.
+    if (line_of_sight(occluders_, map_T_laser.translation(), reflector) == LineOfSight::kBlocked) continue;
+    // Fewer bright beams than the extractor needs: no detection, and no beams in the bound.
     if (p.range <= reflector.radius ||
-        2.0 * std::asin(reflector.radius / p.range) / config_.scan.angle_increment < config_.min_beams) {
+        bright_beams_.count(map_T_laser, p.map_index) < config_.extractor.min_beams) {
       continue;
     }
     add_beams(p.map_index, p.range, p.bearing);
@@ -97,8 +100,12 @@ PosePrediction PosePredictor::predict(const Pose2& map_T_robot) {
     out.relocalization = Relocalization::kLost;
   } else if (match_.status == MatchStatus::kOk) {
     out.relocalization = near_truth(match_.map_T_laser) ? Relocalization::kUnique : Relocalization::kWrong;
-    if (out.relocalization == Relocalization::kWrong)
+    if (out.relocalization == Relocalization::kWrong) {
       out.map_T_robot_rival = match_.map_T_laser * laser_T_robot;
+    } else {
+      solver_.solve(detections_, match_.matches, solution_);
+      if (solution_.status == SolveStatus::kLost) out.relocalization = Relocalization::kNoPose;
+    }
   } else {
     out.relocalization = Relocalization::kAmbiguous;
     // The rival is whichever of the best and the runner-up is not here.

@@ -1,11 +1,15 @@
 #pragma once
 // What the localization should do at one robot pose, predicted from the map alone: which
-// reflectors the laser sees (the matcher's visibility rule plus the extractor's minimum beam
-// count), the beam-spot Cramér-Rao bound of a single-scan fix (refloc-eval's), and what the
-// matcher's global relocalization makes of those reflectors seen exactly (its own rival rule:
-// OK, AMBIGUOUS with a rival elsewhere, or OK at the wrong place).
+// reflectors the laser sees (the matcher's visibility rule, then the extractor's energy
+// threshold and min_beams on the beams the LMS100 model makes bright), the beam-spot Cramér-Rao
+// bound of a single-scan fix (refloc-eval's), what the matcher's global relocalization makes of
+// those reflectors seen exactly (its own rival rule: OK, AMBIGUOUS with a rival elsewhere, or OK
+// at the wrong place), and whether the solver makes a pose of its matches.
 
+#include "bright_beams.hpp"
 #include "plan_config.hpp"
+
+#include "pose_solver/pose_solver.hpp"
 
 #include "reflector_matcher/global_relocalizer.hpp"
 #include "reflector_matcher/map_grid.hpp"
@@ -27,6 +31,9 @@ enum class Relocalization : signed char {
   kAmbiguous,  ///< AMBIGUOUS: a rival pose elsewhere explains them nearly as well
   kWrong,      ///< OK at another pose: the layout there is a copy of this one
   kLost,       ///< enough reflectors, but no hypothesis explains them (e.g. too close together)
+  /// OK at the true pose, but the solver makes no pose of the matches: its linear start
+  /// (paper eq. 4-5) is singular for reflectors on one line, e.g. three on a wall.
+  kNoPose,
 };
 
 const char* to_string(Relocalization r);
@@ -63,6 +70,9 @@ class PosePredictor {
   OccluderGrid occluders_;
   std::unique_ptr<MapTriangleIndex> index_;
   std::unique_ptr<GlobalRelocalizer> relocalizer_;
+  BrightBeamCounter bright_beams_;
+  PoseSolver solver_;
+  PoseSolution solution_;
   std::vector<int> scratch_;
   std::vector<PredictedReflector> predicted_;
   std::vector<int> visible_;
