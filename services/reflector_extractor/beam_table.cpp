@@ -9,6 +9,10 @@ double rssi_to_8bit(int32_t raw, int rssi_bits, RssiScale scale) {
   return rssi_bits == 8 || scale == RssiScale::k8bitIn16bit ? value : value / 257.0;
 }
 
+double rssi_from_8bit(double energy_8bit, int rssi_bits, RssiScale scale) {
+  return rssi_bits == 8 || scale == RssiScale::k8bitIn16bit ? energy_8bit : energy_8bit * 257.0;
+}
+
 void make_beam_table(const LaserScan& scan, BeamTable& table, RssiScale scale) {
   const size_t n = scan.ranges.size();
   // Beam directions change only with the scan geometry: the trigonometry is skipped otherwise.

@@ -49,6 +49,9 @@ struct BeamTable {
 /// RSSI as reported, on the 8-bit scale: 65535 / 255 = 257 maps full scale onto full scale;
 /// k8bitIn16bit: the 16-bit channel holds 8-bit values, used as they are.
 double rssi_to_8bit(int32_t raw, int rssi_bits, RssiScale scale = RssiScale::kNative);
+/// The inverse: an 8-bit-scale energy on the scan's own RSSI scale (where a plot of the raw
+/// channel draws the threshold).
+double rssi_from_8bit(double energy_8bit, int rssi_bits, RssiScale scale = RssiScale::kNative);
 
 /// Fill table from scan (its storage reused: no allocation once grown to the largest scan),
 /// reading a 16-bit RSSI channel on scale (RssiScaleDetector's verdict).

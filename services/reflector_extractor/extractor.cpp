@@ -7,6 +7,56 @@
 
 namespace refloc {
 
+const char* cluster_outcome_name(ClusterOutcome outcome) {
+  switch (outcome) {
+    case ClusterOutcome::kAccepted:
+      return "accepted";
+    case ClusterOutcome::kTooFewBeams:
+      return "too_few_beams";
+    case ClusterOutcome::kTooWide:
+      return "too_wide";
+    case ClusterOutcome::kTooNarrow:
+      return "too_narrow";
+    case ClusterOutcome::kNotRound:
+      return "not_round";
+    case ClusterOutcome::kRadius:
+      return "radius";
+    case ClusterOutcome::kOccluded:
+      return "occluded";
+    case ClusterOutcome::kFitFailed:
+      return "fit_failed";
+  }
+  return "unknown";
+}
+
+void ExtractionStats::count(ClusterOutcome outcome) {
+  switch (outcome) {
+    case ClusterOutcome::kAccepted:
+      break;
+    case ClusterOutcome::kTooFewBeams:
+      ++rejected_too_few_beams;
+      break;
+    case ClusterOutcome::kTooWide:
+      ++rejected_too_wide;
+      break;
+    case ClusterOutcome::kTooNarrow:
+      ++rejected_too_narrow;
+      break;
+    case ClusterOutcome::kNotRound:
+      ++rejected_not_round;
+      break;
+    case ClusterOutcome::kRadius:
+      ++rejected_radius;
+      break;
+    case ClusterOutcome::kOccluded:
+      ++rejected_occluded;
+      break;
+    case ClusterOutcome::kFitFailed:
+      ++rejected_fit_failed;
+      break;
+  }
+}
+
 ExtractorConfig ExtractorConfig::paper() {
   ExtractorConfig config;
   config.mode = Mode::kPaper;
@@ -23,6 +73,7 @@ ReflectorExtractor::ReflectorExtractor(ExtractorConfig config)
   clusters_.reserve(64);
   beams_.reserve(128);
   beam_rssi_.reserve(128);
+  records_.reserve(64);
 }
 
 const std::vector<ReflectorDetection>& ReflectorExtractor::extract(const LaserScan& scan,
@@ -34,17 +85,37 @@ const std::vector<ReflectorDetection>& ReflectorExtractor::extract(const LaserSc
 const std::vector<ReflectorDetection>& ReflectorExtractor::extract(const BeamTable& table) {
   stats_ = ExtractionStats{};
   detections_.clear();
+  records_.clear();
   select_high_energy_beams(table, config_.energy_threshold_8bit, high_energy_);
   clusterer_.cluster(table, high_energy_, clusters_);
   for (const BeamCluster& cluster : clusters_) {
     ++stats_.clusters_considered;
-    if (config_.mode == ExtractorConfig::Mode::kPaper) {
-      process_cluster_paper(table, cluster);
-    } else {
-      process_cluster_default(table, cluster);
-    }
+    ClusterRecord record = describe(table, cluster);
+    record.outcome = config_.mode == ExtractorConfig::Mode::kPaper ? process_cluster_paper(table, cluster)
+                                                                   : process_cluster_default(table, cluster);
+    stats_.count(record.outcome);
+    records_.push_back(record);
   }
   return detections_;
+}
+
+ClusterRecord ReflectorExtractor::describe(const BeamTable& table, const BeamCluster& cluster) const {
+  ClusterRecord r;
+  r.first_beam = cluster.first;
+  r.last_beam = cluster.last;
+  r.num_beams = cluster.num_selected;
+  double range_sum = 0.0;
+  for (int i = cluster.first; i <= cluster.last; ++i) {
+    const auto k = static_cast<size_t>(i);
+    if (high_energy_[k] == 0) continue;
+    range_sum += table.beams[k].range;
+    r.max_rssi_8bit = std::max(r.max_rssi_8bit, table.beams[k].rssi_8bit);
+  }
+  r.range = range_sum / std::max(cluster.num_selected, 1);
+  const Eigen::Vector2d& middle =
+      table.beams[static_cast<size_t>((cluster.first + cluster.last) / 2)].direction;
+  r.bearing = std::atan2(middle.y(), middle.x());
+  return r;
 }
 
 void ReflectorExtractor::gather_beams(const BeamTable& table, const BeamCluster& cluster) {
@@ -82,11 +153,8 @@ bool ReflectorExtractor::occluded(const BeamTable& table, const BeamCluster& clu
   return false;
 }
 
-void ReflectorExtractor::process_cluster_paper(const BeamTable& table, const BeamCluster& cluster) {
-  if (cluster.num_selected < std::max(config_.min_beams, 3)) {
-    ++stats_.rejected_too_few_beams;
-    return;
-  }
+ClusterOutcome ReflectorExtractor::process_cluster_paper(const BeamTable& table, const BeamCluster& cluster) {
+  if (cluster.num_selected < std::max(config_.min_beams, 3)) return ClusterOutcome::kTooFewBeams;
   gather_beams(table, cluster);
   CircleFit fit;
   bool fitted = false;
@@ -102,31 +170,18 @@ void ReflectorExtractor::process_cluster_paper(const BeamTable& table, const Bea
                                   config_.clustering.range_sigma, fit);
       break;
   }
-  if (!fitted) {
-    ++stats_.rejected_fit_failed;
-    return;
-  }
+  if (!fitted) return ClusterOutcome::kFitFailed;
   const double d_bar = paper_roundness_index(beams_, fit.center, fit.radius, config_.paper_drop_points);
-  if (d_bar < 0.0) {
-    ++stats_.rejected_too_few_beams;
-    return;
-  }
-  if (!config_.paper_roundness.accepts(d_bar, fit.center.norm())) {
-    ++stats_.rejected_not_round;
-    return;
-  }
+  if (d_bar < 0.0) return ClusterOutcome::kTooFewBeams;
+  if (!config_.paper_roundness.accepts(d_bar, fit.center.norm())) return ClusterOutcome::kNotRound;
   emit(table, cluster, fit, d_bar, fit.radius);
+  return ClusterOutcome::kAccepted;
 }
 
-void ReflectorExtractor::process_cluster_default(const BeamTable& table, const BeamCluster& cluster) {
-  if (cluster.num_selected < config_.min_beams) {
-    ++stats_.rejected_too_few_beams;
-    return;
-  }
-  if (occluded(table, cluster)) {
-    ++stats_.rejected_occluded;
-    return;
-  }
+ClusterOutcome ReflectorExtractor::process_cluster_default(const BeamTable& table,
+                                                           const BeamCluster& cluster) {
+  if (cluster.num_selected < config_.min_beams) return ClusterOutcome::kTooFewBeams;
+  if (occluded(table, cluster)) return ClusterOutcome::kOccluded;
   gather_beams(table, cluster);
   // Partial hits at the edges: drop at most one beam a side, never below min_beams.
   const double brightest = *std::max_element(beam_rssi_.begin(), beam_rssi_.end());
@@ -140,10 +195,8 @@ void ReflectorExtractor::process_cluster_default(const BeamTable& table, const B
     beam_rssi_.erase(beam_rssi_.begin());
   }
   CircleFit fit;
-  if (!fit_circle_known_radius(beams_, config_.reflector_radius, config_.fit, fit)) {
-    ++stats_.rejected_fit_failed;
-    return;
-  }
+  if (!fit_circle_known_radius(beams_, config_.reflector_radius, config_.fit, fit))
+    return ClusterOutcome::kFitFailed;
   // The radius check is a shape test and, like the residual test, must not depend on how
   // closely the sensor follows our spot model: it fits central rays.
   KnownRadiusFitConfig shape_fit = config_.fit;
@@ -157,18 +210,14 @@ void ReflectorExtractor::process_cluster_default(const BeamTable& table, const B
     case RoundnessVerdict::kRound:
       break;
     case RoundnessVerdict::kTooWide:
-      ++stats_.rejected_too_wide;
-      return;
+      return ClusterOutcome::kTooWide;
     case RoundnessVerdict::kTooNarrow:
-      ++stats_.rejected_too_narrow;
-      return;
+      return ClusterOutcome::kTooNarrow;
     case RoundnessVerdict::kResidual:
     case RoundnessVerdict::kFlat:
-      ++stats_.rejected_not_round;
-      return;
+      return ClusterOutcome::kNotRound;
     case RoundnessVerdict::kRadiusMismatch:
-      ++stats_.rejected_radius;
-      return;
+      return ClusterOutcome::kRadius;
   }
   const double range = fit.center.norm();
   if (range > 0.0) {
@@ -187,6 +236,7 @@ void ReflectorExtractor::process_cluster_default(const BeamTable& table, const B
   }
   emit(table, cluster, fit, mean_abs_range_residual(beams_, fit, config_.fit),
        have_free ? free_fit.radius : fit.radius);
+  return ClusterOutcome::kAccepted;
 }
 
 void ReflectorExtractor::emit(const BeamTable& table, const BeamCluster& cluster, const CircleFit& fit,

@@ -57,6 +57,30 @@ struct ExtractorConfig {
   static ExtractorConfig paper();
 };
 
+/// What became of one cluster of bright beams (REFLECTOR_CLUSTERS says it per cluster).
+enum class ClusterOutcome : uint8_t {
+  kAccepted,
+  kTooFewBeams,
+  kTooWide,
+  kTooNarrow,
+  kNotRound,  ///< residual, d-bar or flat-surface test
+  kRadius,
+  kOccluded,  ///< occluded or next to a dazzled beam
+  kFitFailed,
+};
+const char* cluster_outcome_name(ClusterOutcome outcome);  ///< "accepted", "too_few_beams", ...
+
+/// One cluster of bright beams as the extractor judged it.
+struct ClusterRecord {
+  int first_beam = 0;
+  int last_beam = 0;
+  int num_beams = 0;  ///< bright beams in it
+  ClusterOutcome outcome = ClusterOutcome::kAccepted;
+  double range = 0.0;          ///< mean range of its bright beams [m]
+  double bearing = 0.0;        ///< of its middle beam, laser frame [rad]
+  double max_rssi_8bit = 0.0;  ///< its brightest beam [8-bit scale]
+};
+
 /// Counts of one scan's clusters by fate.
 struct ExtractionStats {
   int clusters_considered = 0;  ///< high-energy clusters
@@ -71,6 +95,7 @@ struct ExtractionStats {
     return rejected_too_few_beams + rejected_too_wide + rejected_too_narrow + rejected_not_round +
            rejected_radius + rejected_occluded + rejected_fit_failed;
   }
+  void count(ClusterOutcome outcome);
 };
 
 class ReflectorExtractor {
@@ -86,13 +111,17 @@ class ReflectorExtractor {
   const std::vector<ReflectorDetection>& extract(const BeamTable& table);
 
   const ExtractionStats& stats() const { return stats_; }
+  /// Every bright cluster of the last scan, in beam order, with its outcome; the accepted ones
+  /// are the detections, in the same order.
+  const std::vector<ClusterRecord>& clusters() const { return records_; }
   const ExtractorConfig& config() const { return config_; }
 
  private:
   void gather_beams(const BeamTable& table, const BeamCluster& cluster);
   bool occluded(const BeamTable& table, const BeamCluster& cluster) const;
-  void process_cluster_paper(const BeamTable& table, const BeamCluster& cluster);
-  void process_cluster_default(const BeamTable& table, const BeamCluster& cluster);
+  ClusterOutcome process_cluster_paper(const BeamTable& table, const BeamCluster& cluster);
+  ClusterOutcome process_cluster_default(const BeamTable& table, const BeamCluster& cluster);
+  ClusterRecord describe(const BeamTable& table, const BeamCluster& cluster) const;
   void emit(const BeamTable& table, const BeamCluster& cluster, const CircleFit& fit, double roundness,
             double fitted_radius);
 
@@ -105,6 +134,7 @@ class ReflectorExtractor {
   std::vector<FitBeam> beams_;
   std::vector<double> beam_rssi_;
   std::vector<ReflectorDetection> detections_;
+  std::vector<ClusterRecord> records_;
 };
 
 }  // namespace refloc

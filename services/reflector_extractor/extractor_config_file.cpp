@@ -25,6 +25,12 @@ ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& c) {
       {"/output_channel", "",
        "LCM channel the detections are published on (reflector_detections_t), one message per accepted scan"},
       out.output_channel);
+  out.clusters_channel = c.string(
+      {"/clusters_channel", "",
+       "LCM channel of every bright cluster with its outcome (accepted, or the reason it was rejected) "
+       "and the energy threshold (reflector_clusters_t), one message per accepted scan, for commissioning "
+       "views; \"\" publishes none"},
+      out.clusters_channel);
   out.odometry_channel =
       c.string({"/odometry_channel", "",
                 "LCM channel of the body twist (odometry_t) that motion-compensates the scans"},

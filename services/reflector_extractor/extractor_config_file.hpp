@@ -17,6 +17,8 @@ struct ExtractorServiceConfig {
   ExtractorConfig extractor;
   std::string input_channel = "LMS100_SCAN";
   std::string output_channel = "REFLECTORS";
+  /// Every bright cluster with its outcome and the threshold, per scan; "" publishes none.
+  std::string clusters_channel = "REFLECTOR_CLUSTERS";
   std::string odometry_channel = "ODOMETRY";
   /// The solver's fixes, the motion source while ODOMETRY is absent or stale.
   std::string laser_pose_channel = "LASER_POSE";

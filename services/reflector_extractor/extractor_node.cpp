@@ -54,6 +54,11 @@ const ExtractorOutput& ExtractorNode::on_scan(const LaserScan& scan, int64_t hos
   make_beam_table(scan, table_, rssi_scale_.scale());
   output_.detections = extractor_.extract(table_);  // copy into reused storage
   output_.stats = extractor_.stats();
+  output_.clusters = extractor_.clusters();
+  output_.energy_threshold_8bit = extractor_.config().energy_threshold_8bit;
+  output_.energy_threshold_raw =
+      rssi_from_8bit(output_.energy_threshold_8bit, scan.rssi_bits, rssi_scale_.scale());
+  output_.rssi_read_as_8bit = scan.rssi_bits == 16 && rssi_scale_.scale() == RssiScale::k8bitIn16bit;
   no_reflector_.observe(table_, output_.stats, output_.detections.size(), host_utime, output_.events);
   output_.compensation = compensator_.apply(output_.detections, scan.utime);
   if (output_.compensation != last_compensation_ || !compensation_chosen_) {

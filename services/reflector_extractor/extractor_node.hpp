@@ -28,6 +28,11 @@ struct ExtractorOutput {
   uint32_t scan_counter = 0;
   std::vector<ReflectorDetection> detections;  ///< in the laser frame at utime
   ExtractionStats stats;
+  /// Every bright cluster with its outcome (REFLECTOR_CLUSTERS); the accepted ones are detections.
+  std::vector<ClusterRecord> clusters;
+  double energy_threshold_8bit = 0.0;  ///< the extractor's [8-bit scale]
+  double energy_threshold_raw = 0.0;   ///< the same on this scan's own RSSI scale
+  bool rssi_read_as_8bit = false;      ///< a 16-bit channel read as 8-bit values
   CompensationOutcome compensation = CompensationOutcome::kOff;
 
   /// Calls bump(name, increment) for each heartbeat counter an accepted scan touches (a

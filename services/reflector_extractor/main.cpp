@@ -42,6 +42,7 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
   ServiceRuntime runtime("reflector_extractor", lcm_url);
   LaserScan scan;
   reflector_detections_t out;
+  reflector_clusters_t clusters_out;
   runtime.subscribe<odometry_t>(config.odometry_channel, [&](const odometry_t& msg) {
     report_events(runtime, node.on_odometry(odometry_twist_from_message(msg), now_utime()));
   });
@@ -56,6 +57,9 @@ int run(const std::string& lcm_url, const std::string& config_path, const std::s
     o.for_each_counter([&](const char* name, int64_t by) { runtime.counter(name) += by; });
     to_message(o, out);
     runtime.publish(config.output_channel, out);
+    if (config.clusters_channel.empty()) return;
+    to_message(o, clusters_out);
+    runtime.publish(config.clusters_channel, clusters_out);
   });
   runtime.add_periodic(1.0, [&] {
     const ExtractorHealth h = node.health(runtime.messages_in(), now_utime(), config.input_channel);

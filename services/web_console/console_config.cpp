@@ -17,6 +17,9 @@ void parse_channels(const JsonConfig& config, ConsoleChannels& c) {
   const Key keys[] = {
       {"scan", &c.scan, "laser scans drawn (laser_scan_t): points by RSSI, range and RSSI against angle"},
       {"detections", &c.detections, "the extractor's reflectors drawn (reflector_detections_t)"},
+      {"clusters", &c.clusters,
+       "the extractor's bright clusters, accepted or rejected with the reason, and its energy threshold, "
+       "drawn in the sensor view (reflector_clusters_t)"},
       {"matches", &c.matches, "the matcher's associations drawn as lines (reflector_matches_t)"},
       {"pose", &c.pose, "the fused pose drawn with its covariance ellipse and trail (pose2d_t)"},
       {"laser_pose", &c.laser_pose, "the solver's laser fixes drawn with their trail (pose2d_t)"},

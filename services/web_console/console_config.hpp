@@ -15,6 +15,7 @@ class JsonConfig;
 struct ConsoleChannels {
   std::string scan = "LMS100_SCAN";
   std::string detections = "REFLECTORS";
+  std::string clusters = "REFLECTOR_CLUSTERS";
   std::string matches = "REFLECTOR_MATCHES";
   std::string pose = "POSE";
   std::string laser_pose = "LASER_POSE";

@@ -39,6 +39,25 @@ struct ConsoleDetections {
   std::vector<ConsoleDetection> detections;
 };
 
+/// One bright cluster of REFLECTOR_CLUSTERS (reflector_cluster_t).
+struct ConsoleCluster {
+  int first_beam = 0;
+  int last_beam = 0;
+  int beams = 0;
+  std::string outcome;   ///< "accepted", or the reason it was rejected ("too_few_beams", ...)
+  double range = 0.0;    ///< [m]
+  double bearing = 0.0;  ///< [rad]
+  double max_rssi_8bit = 0.0;
+};
+
+struct ConsoleClusters {
+  int64_t utime = 0;  ///< [us], the scan's
+  double energy_threshold_8bit = 0.0;
+  double energy_threshold_raw = 0.0;  ///< on the scan's own RSSI scale
+  bool rssi_read_as_8bit = false;
+  std::vector<ConsoleCluster> clusters;
+};
+
 /// One pair of REFLECTOR_MATCHES: a detection (laser frame) and the map reflector it is.
 struct ConsoleMatch {
   int map_id = 0;

@@ -46,6 +46,7 @@ ConsoleModel::ConsoleModel(const ConsoleModelConfig& config, ReflectorMap map, b
       control_enabled_(control_enabled),
       scan_rate_(config.scan_rate_hz),
       detections_rate_(config.scan_rate_hz),
+      clusters_rate_(config.scan_rate_hz),
       matches_rate_(config.scan_rate_hz) {
   for (int i = 0; i < 3; ++i) {
     pose_rates_.emplace_back(config.pose_rate_hz);
@@ -117,6 +118,26 @@ std::optional<ConsoleFrame> ConsoleModel::on_detections(const ConsoleDetections&
                 {"detections", detections},
                 {"map_T_laser", laser_pose_json(map_T_laser_)}},
                "detections");
+}
+
+std::optional<ConsoleFrame> ConsoleModel::on_clusters(const ConsoleClusters& in) {
+  if (!clusters_rate_.accept(in.utime)) return std::nullopt;
+  json clusters = json::array();
+  for (const ConsoleCluster& c : in.clusters)
+    clusters.push_back({{"first_beam", c.first_beam},
+                        {"last_beam", c.last_beam},
+                        {"beams", c.beams},
+                        {"outcome", c.outcome},
+                        {"range", c.range},
+                        {"bearing", c.bearing},
+                        {"max_rssi_8bit", c.max_rssi_8bit}});
+  return frame({{"type", "clusters"},
+                {"utime", in.utime},
+                {"energy_threshold_8bit", in.energy_threshold_8bit},
+                {"energy_threshold_raw", in.energy_threshold_raw},
+                {"rssi_read_as_8bit", in.rssi_read_as_8bit},
+                {"clusters", clusters}},
+               "clusters");
 }
 
 std::optional<ConsoleFrame> ConsoleModel::on_matches(const ConsoleMatches& in) {

@@ -34,6 +34,7 @@ class ConsoleModel {
   /// Detections and matches reach the page at scan_rate_hz too, by their scan's stamp: the same
   /// scans as on_scan lets through.
   std::optional<ConsoleFrame> on_detections(const ConsoleDetections& detections);
+  std::optional<ConsoleFrame> on_clusters(const ConsoleClusters& clusters);
   std::optional<ConsoleFrame> on_matches(const ConsoleMatches& matches);
   std::optional<ConsoleFrame> on_pose(PoseSource source, const ConsolePose& pose);
   ConsoleFrame on_goal(const ConsoleGoal& goal);
@@ -59,6 +60,7 @@ class ConsoleModel {
   bool control_enabled_;
   RateDecimator scan_rate_;
   RateDecimator detections_rate_;
+  RateDecimator clusters_rate_;
   RateDecimator matches_rate_;
   std::vector<RateDecimator> pose_rates_;
   std::vector<PoseTrail> trails_;

@@ -32,6 +32,9 @@ void show_all(ServiceRuntime& rt, ConsoleModel& model, ConsoleServer& server, co
   show<reflector_detections_t>(rt, server, ch.detections, [&](const reflector_detections_t& m) {
     return model.on_detections(from_message(m));
   });
+  show<reflector_clusters_t>(rt, server, ch.clusters, [&](const reflector_clusters_t& m) {
+    return model.on_clusters(from_message(m));
+  });
   show<reflector_matches_t>(rt, server, ch.matches,
                             [&](const reflector_matches_t& m) { return model.on_matches(from_message(m)); });
   const std::pair<const std::string*, PoseSource> poses[] = {{&ch.pose, PoseSource::kPose},

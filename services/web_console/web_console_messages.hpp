@@ -12,6 +12,7 @@
 #include <refloc/nav_goal_t.hpp>
 #include <refloc/nav_status_t.hpp>
 #include <refloc/pose2d_t.hpp>
+#include <refloc/reflector_clusters_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
 
@@ -44,6 +45,16 @@ inline ConsoleDetections from_message(const reflector_detections_t& m) {
   ConsoleDetections d{m.utime, m.clusters_considered, m.clusters_rejected, {}};
   for (const reflector_t& r : m.reflectors) d.detections.push_back(from_message(r));
   return d;
+}
+
+inline ConsoleClusters from_message(const reflector_clusters_t& m) {
+  ConsoleClusters c{m.utime, m.energy_threshold_8bit, m.energy_threshold_raw, m.rssi_read_as_8bit != 0, {}};
+  for (const reflector_cluster_t& k : m.clusters)
+    c.clusters.push_back({k.first_beam, k.last_beam, k.nbeams,
+                          state_name(k.outcome, {"accepted", "too_few_beams", "too_wide", "too_narrow",
+                                                 "not_round", "radius", "occluded", "fit_failed"}),
+                          k.range, k.bearing, k.max_rssi_8bit});
+  return c;
 }
 
 inline ConsoleMatches from_message(const reflector_matches_t& m) {

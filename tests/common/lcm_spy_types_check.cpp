@@ -15,6 +15,8 @@
 #include <refloc/nav_status_t.hpp>
 #include <refloc/odometry_t.hpp>
 #include <refloc/pose2d_t.hpp>
+#include <refloc/reflector_cluster_t.hpp>
+#include <refloc/reflector_clusters_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 #include <refloc/reflector_match_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
@@ -50,7 +52,9 @@ TEST(LcmSpyTypes, EveryCppTypeResolvesToItsJavaClassInTheJar) {
   add<map_health_t>(expected);
   add<map_reflector_health_t>(expected);
   add<map_candidate_t>(expected);
-  ASSERT_EQ(expected.size(), 15u);
+  add<reflector_cluster_t>(expected);
+  add<reflector_clusters_t>(expected);
+  ASSERT_EQ(expected.size(), 17u);
 
   // lcm-spy's class path: LCM, jchart2d (its plots), our types.
   std::string command = std::string("java -cp /usr/share/java/lcm.jar:/usr/share/java/jchart2d.jar:") +
@@ -59,7 +63,7 @@ TEST(LcmSpyTypes, EveryCppTypeResolvesToItsJavaClassInTheJar) {
   const auto result = testing::run_command(command);
   ASSERT_EQ(result.exit_code, 0) << result.output;
 
-  EXPECT_NE(result.output.find("Found 15 LCM types"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("Found 17 LCM types"), std::string::npos) << result.output;
   std::map<int64_t, std::string> resolved;
   std::istringstream lines(result.output);
   std::string line;

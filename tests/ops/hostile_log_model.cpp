@@ -82,6 +82,8 @@ void read_stack_message(LogModel& model, const LogEventView& e) {
     tally<nav_goal_t>(model, e);
   } else if (ch == "NAV_STATUS") {
     tally<nav_status_t>(model, e);
+  } else if (ch == "REFLECTOR_CLUSTERS") {
+    tally<reflector_clusters_t>(model, e);
   } else if (ch == "MAP_HEALTH") {
     tally<map_health_t>(model, e);
   } else if (ch != "LCM_SELF_TEST") {  // LCM's own start-up probe, not ours

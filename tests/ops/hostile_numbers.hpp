@@ -9,6 +9,7 @@
 #include <refloc/nav_status_t.hpp>
 #include <refloc/odometry_t.hpp>
 #include <refloc/pose2d_t.hpp>
+#include <refloc/reflector_clusters_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
 #include <refloc/twist_t.hpp>
@@ -80,6 +81,12 @@ void numbers(const heartbeat_t& m, Visit&& v) {
 }
 template <class Visit>
 void numbers(const wheel_encoders_t&, Visit&&) {}
+template <class Visit>
+void numbers(const reflector_clusters_t& m, Visit&& v) {
+  v("energy_threshold_8bit", m.energy_threshold_8bit), v("energy_threshold_raw", m.energy_threshold_raw);
+  for (const auto& c : m.clusters)
+    v("range", c.range), v("bearing", c.bearing), v("max_rssi_8bit", c.max_rssi_8bit);
+}
 template <class Visit>
 void numbers(const map_health_t& m, Visit&& v) {
   for (const auto& r : m.reflectors) {

@@ -46,6 +46,33 @@ TEST(ExtractorNode, DetectionsAreTheExtractorsCompensatedWithFreshOdometry) {
   EXPECT_EQ(counters_of(out).count("scans_without_fresh_odometry"), 0u);
 }
 
+TEST(ExtractorNode, ClustersAndTheThresholdOnTheScansOwnRssiScaleComeWithEveryScan) {
+  ExtractorServiceConfig config;
+  config.motion_compensation = false;
+  ExtractorNode node(config, Pose2{});
+  LaserScan scan = scan_with_one_reflector(4);
+  const ExtractorOutput& native = node.on_scan(scan);
+  ASSERT_EQ(native.clusters.size(), 1u);
+  EXPECT_EQ(native.clusters[0].outcome, ClusterOutcome::kAccepted);
+  EXPECT_EQ(native.clusters[0].first_beam, native.detections[0].first_beam);
+  EXPECT_EQ(native.energy_threshold_8bit, 180.0);
+  EXPECT_EQ(native.energy_threshold_raw, 180.0 * 257.0);  // the 16-bit channel
+  EXPECT_FALSE(native.rssi_read_as_8bit);
+  // A sensor that sends 8-bit values in the 16-bit channel: once detected, the threshold is 180
+  // on that channel, where a plot of its raw values must draw it.
+  for (int i = 0; i < 3; ++i) {
+    scan = scan_with_one_reflector(5 + static_cast<uint32_t>(i));
+    scan.utime += (i + 1) * 20'000;
+    scan.scan_counter += static_cast<uint32_t>(i + 1);
+    for (int32_t& v : scan.rssi) v /= 257;
+    node.on_scan(scan);
+  }
+  const ExtractorOutput& read_as_8bit = node.on_scan(scan);
+  ASSERT_EQ(node.rssi_scale(), RssiScale::k8bitIn16bit);
+  EXPECT_TRUE(read_as_8bit.rssi_read_as_8bit);
+  EXPECT_EQ(read_as_8bit.energy_threshold_raw, 180.0);
+}
+
 TEST(ExtractorNode, AScanWithoutFreshOdometryBumpsScansWithoutFreshOdometry) {
   ExtractorNode node(ExtractorServiceConfig{}, Pose2{});
   const LaserScan scan = scan_with_one_reflector(2);

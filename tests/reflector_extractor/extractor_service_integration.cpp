@@ -1,8 +1,8 @@
 // reflector_extractor as a real process over UDP multicast (run in a private network
-// namespace): LMS100_SCAN, ODOMETRY and LASER_POSE in, REFLECTORS out. Checks the message
-// fields, that the published centres are the library's, motion-compensated with the odometry
-// twist and the laser mount, or without odometry with the twist of the LASER_POSE fixes, and
-// that a bad config file exits with code 2.
+// namespace): LMS100_SCAN, ODOMETRY and LASER_POSE in, REFLECTORS and REFLECTOR_CLUSTERS out. Checks the
+// message fields, that the published centres are the library's, motion-compensated with the odometry twist
+// and the laser mount, or without odometry with the twist of the LASER_POSE fixes, and that a bad config file
+// exits with code 2.
 
 #include "common/lcm_conversions.hpp"
 #include "common/robot_config.hpp"
@@ -17,6 +17,7 @@
 #include <refloc/laser_scan_t.hpp>
 #include <refloc/odometry_t.hpp>
 #include <refloc/pose2d_t.hpp>
+#include <refloc/reflector_clusters_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 
 #include <chrono>
@@ -36,6 +37,7 @@ class ExtractorService : public ::testing::Test {
   void SetUp() override {
     ASSERT_TRUE(lcm_.good());
     lcm_.subscribe("REFLECTORS", &ExtractorService::on_reflectors, this);
+    lcm_.subscribe("REFLECTOR_CLUSTERS", &ExtractorService::on_clusters, this);
     ASSERT_TRUE(service_.start({kBin + "reflector_extractor", std::string("--lcm-url=") + kUrl, "--config",
                                 kSource + "/deploy/config/reflector_extractor.json", "--robot",
                                 kSource + "/deploy/config/robot.json"}));
@@ -43,6 +45,19 @@ class ExtractorService : public ::testing::Test {
 
   void on_reflectors(const lcm::ReceiveBuffer*, const std::string&, const reflector_detections_t* msg) {
     received_.push_back(*msg);
+  }
+  void on_clusters(const lcm::ReceiveBuffer*, const std::string&, const reflector_clusters_t* msg) {
+    clusters_.push_back(*msg);
+  }
+  /// REFLECTOR_CLUSTERS of the scan at utime (published right after its REFLECTORS).
+  std::optional<reflector_clusters_t> clusters_of(int64_t utime) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+    while (std::chrono::steady_clock::now() < deadline) {
+      for (const reflector_clusters_t& c : clusters_)
+        if (c.utime == utime) return c;
+      lcm_.handleTimeout(20);
+    }
+    return std::nullopt;
   }
 
   /// Publish msg on channel every 200 ms (the service may still be starting) until the
@@ -78,6 +93,7 @@ class ExtractorService : public ::testing::Test {
   lcm::LCM lcm_{kUrl};
   testing::ChildProcess service_;
   std::vector<reflector_detections_t> received_;
+  std::vector<reflector_clusters_t> clusters_;
 };
 
 TEST_F(ExtractorService, PublishesMotionCompensatedDetectionsOfEachScan) {
@@ -129,6 +145,20 @@ TEST_F(ExtractorService, PublishesMotionCompensatedDetectionsOfEachScan) {
   ReflectorExtractor raw_extractor;
   const std::vector<ReflectorDetection>& raw = raw_extractor.extract(received);
   EXPECT_NEAR((expected[1].laser_p_center - raw[1].laser_p_center).norm(), 0.0106, 0.001);
+
+  // Every bright cluster of the scan, with its outcome, and the threshold on the scan's scale.
+  const auto clusters = clusters_of(scan.utime);
+  ASSERT_TRUE(clusters.has_value());
+  EXPECT_EQ(clusters->scan_counter, out->scan_counter);
+  EXPECT_EQ(clusters->energy_threshold_8bit, 180.0f);
+  EXPECT_EQ(clusters->energy_threshold_raw, 180.0f * 257.0f);  // 16-bit RSSI
+  EXPECT_FALSE(clusters->rssi_read_as_8bit);
+  ASSERT_EQ(clusters->nclusters, 3);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(clusters->clusters[i].outcome, reflector_cluster_t::ACCEPTED);
+    EXPECT_EQ(clusters->clusters[i].first_beam, out->reflectors[i].first_beam);
+    EXPECT_NEAR(clusters->clusters[i].range, 2.0 - 0.06, 0.03);
+  }
   EXPECT_EQ(service_.stop(), 0);
 }
 

@@ -133,6 +133,43 @@ TEST(ReflectorExtractor, WithMinBeams1AFarSingleBeamGetsABeamStepWideCovariance)
   FAIL() << "no single-beam detection in 20 scans";
 }
 
+TEST(ReflectorExtractor, EveryBrightClusterIsRecordedWithItsOutcomeInBeamOrder) {
+  // Left to right in the scan (beams run counter-clockwise): a reflector far enough for one beam,
+  // a bright tape strip, a reflector, a reflector half hidden behind a box edge.
+  SyntheticScene scene;
+  scene.cylinders = {test::cylinder_at(16.0, -60.0 * kDeg), test::cylinder_at(3.0, 20.0 * kDeg),
+                     test::cylinder_at(3.0, 90.0 * kDeg)};
+  scene.segments = {test::flat_strip(2.0, -20.0 * kDeg, 0.3, 240.0, 0.0),
+                    SyntheticSegment{{-0.2, 2.0}, {0.0, 2.0}, 60.0}};
+  ReflectorExtractor extractor;
+  const std::vector<ReflectorDetection>& detections = extractor.extract(render(scene, 3));
+  const std::vector<ClusterRecord>& clusters = extractor.clusters();
+  ASSERT_EQ(clusters.size(), 4u);
+  EXPECT_EQ(clusters[0].outcome, ClusterOutcome::kTooFewBeams);
+  EXPECT_NE(clusters[1].outcome, ClusterOutcome::kAccepted) << cluster_outcome_name(clusters[1].outcome);
+  EXPECT_EQ(clusters[2].outcome, ClusterOutcome::kAccepted);
+  EXPECT_EQ(clusters[3].outcome, ClusterOutcome::kOccluded);
+  EXPECT_EQ(extractor.stats().clusters_considered, 4);
+  EXPECT_EQ(extractor.stats().rejected(), 3);
+  // The accepted ones are the detections, in order; every record says where it is.
+  ASSERT_EQ(detections.size(), 1u);
+  EXPECT_EQ(clusters[2].first_beam, detections[0].first_beam);
+  EXPECT_EQ(clusters[2].num_beams, detections[0].num_beams);
+  EXPECT_NEAR(clusters[2].range, 3.0 - 0.06, 0.03);  // the front of the cylinder
+  EXPECT_NEAR(clusters[2].bearing, 20.0 * kDeg, 0.5 * kDeg);
+  EXPECT_NEAR(clusters[0].range, 16.0 - 0.06, 0.06);
+  int previous_last = -1;
+  for (const ClusterRecord& c : clusters) {
+    EXPECT_GT(c.first_beam, previous_last);
+    EXPECT_GE(c.last_beam, c.first_beam);
+    EXPECT_GE(c.max_rssi_8bit, ExtractorConfig{}.energy_threshold_8bit);
+    previous_last = c.last_beam;
+  }
+  // A scan without bright beams leaves no record from the one before.
+  extractor.extract(render(SyntheticScene{}, 4));
+  EXPECT_TRUE(extractor.clusters().empty());
+}
+
 TEST(ReflectorExtractor, ExtractDoesNotReallocateItsOutputOnceWarm) {
   SyntheticScene scene;
   for (int k = 0; k < 8; ++k)

@@ -71,6 +71,21 @@ def page(args):
         if pose_s is None or pose_s > 2.0:
             fail(failures, f"no OK POSE line within 2 s ({pose_s}): "
                  f"{driver.find_element(By.ID, 'pose-line').text!r}")
+        # The sensor view: the scan's bright clusters with their outcome and the energy threshold.
+        cluster_line = ""
+        while time.monotonic() - loaded < 4.0 and not cluster_line.startswith("clusters: "):
+            cluster_line = driver.find_element(By.ID, "cluster-line").text
+            if " accepted" not in cluster_line:
+                cluster_line = ""
+            time.sleep(0.05)
+        threshold = driver.execute_script(
+            "const c = window.refloc.state.clusters; return c ? c.energy_threshold_raw : null;")
+        print(f"sensor view: {cluster_line!r}, threshold on the scan's RSSI scale {threshold}")
+        clicks["sensor_view"] = {"cluster_line": cluster_line, "energy_threshold_raw": threshold}
+        if not cluster_line or cluster_line.startswith("clusters: 0 accepted"):
+            fail(failures, f"the sensor view shows no accepted cluster of the scan: {cluster_line!r}")
+        if not threshold or threshold <= 0:
+            fail(failures, f"no energy threshold for the sensor view's RSSI plot: {threshold!r}")
         if not driver.find_element(By.ID, "controls").is_displayed():
             fail(failures, "controls hidden although the service has control enabled")
 

@@ -61,6 +61,34 @@ TEST(ConsoleModel, ScansAt50HzReachThePageAt10HzByTheirOwnStamps) {
   EXPECT_EQ(matches_sent, 10) << "REFLECTOR_MATCHES at the scans' rate";
 }
 
+TEST(ConsoleModel, ClustersReachThePageForTheSameScansWithTheThresholdAndEachOutcome) {
+  ConsoleModel model = demo_model();
+  ConsoleScan scan;
+  ConsoleClusters clusters;
+  clusters.energy_threshold_8bit = 180.0;
+  clusters.energy_threshold_raw = 46260.0;
+  clusters.clusters = {{10, 14, 5, "accepted", 3.2, 0.1, 240.0}, {40, 52, 13, "too_wide", 2.0, 0.5, 250.0}};
+  int both = 0, scans_sent = 0, clusters_sent = 0;
+  for (int i = 0; i < 50; ++i) {
+    scan.utime = clusters.utime = 1'000'000 + i * 20'000 + (i % 3 ? 200 : -200);
+    const auto scan_frame = model.on_scan(scan);
+    const auto cluster_frame = model.on_clusters(clusters);
+    scans_sent += scan_frame ? 1 : 0;
+    clusters_sent += cluster_frame ? 1 : 0;
+    both += scan_frame && cluster_frame ? 1 : 0;
+    if (!cluster_frame) continue;
+    const nlohmann::json j = parsed(*cluster_frame);
+    EXPECT_EQ(j["type"], "clusters");
+    EXPECT_EQ(j["utime"], clusters.utime);
+    EXPECT_EQ(j["energy_threshold_raw"], 46260.0);
+    ASSERT_EQ(j["clusters"].size(), 2u);
+    EXPECT_EQ(j["clusters"][1]["outcome"], "too_wide");
+    EXPECT_EQ(j["clusters"][1]["last_beam"], 52);
+  }
+  EXPECT_EQ(clusters_sent, 10);
+  EXPECT_EQ(both, scans_sent) << "the page draws a scan's clusters only with that scan";
+}
+
 TEST(ConsoleModel, ScansAreDrawnFromTheLatestOkMatchesHypothesis) {
   ConsoleModel model = demo_model();
   ConsoleMatches matches;

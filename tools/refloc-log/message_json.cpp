@@ -1,4 +1,4 @@
-// Every refloc LCM type mapped to JSON field by field, one to_json per type (15 types);
+// Every refloc LCM type mapped to JSON field by field, one to_json per type (17 types);
 // longer than 300 lines because the mapping is one table that reads best in one place.
 #include "message_json.hpp"
 
@@ -14,6 +14,8 @@
 #include <refloc/nav_status_t.hpp>
 #include <refloc/odometry_t.hpp>
 #include <refloc/pose2d_t.hpp>
+#include <refloc/reflector_cluster_t.hpp>
+#include <refloc/reflector_clusters_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 #include <refloc/reflector_match_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
@@ -157,6 +159,28 @@ OrderedJson to_json(const pose2d_t& m) {
           {"residual", m.residual}};
 }
 
+OrderedJson to_json(const reflector_cluster_t& m) {
+  return {{"first_beam", m.first_beam},
+          {"last_beam", m.last_beam},
+          {"nbeams", m.nbeams},
+          {"outcome", m.outcome},
+          {"range", m.range},
+          {"bearing", m.bearing},
+          {"max_rssi_8bit", m.max_rssi_8bit}};
+}
+
+OrderedJson to_json(const reflector_clusters_t& m) {
+  OrderedJson clusters = OrderedJson::array();
+  for (const auto& c : m.clusters) clusters.push_back(to_json(c));
+  return {{"utime", m.utime},
+          {"scan_counter", m.scan_counter},
+          {"energy_threshold_8bit", m.energy_threshold_8bit},
+          {"energy_threshold_raw", m.energy_threshold_raw},
+          {"rssi_read_as_8bit", m.rssi_read_as_8bit != 0},
+          {"nclusters", m.nclusters},
+          {"clusters", std::move(clusters)}};
+}
+
 OrderedJson to_json(const reflector_detections_t& m) {
   OrderedJson reflectors = OrderedJson::array();
   for (const auto& r : m.reflectors) reflectors.push_back(to_json(r));
@@ -253,6 +277,12 @@ reflector_matches_t prototype_message() {
   return m;
 }
 template <>
+reflector_clusters_t prototype_message() {
+  reflector_clusters_t m{};
+  m.clusters.resize(1);
+  return m;
+}
+template <>
 map_health_t prototype_message() {
   map_health_t m{};
   m.reflectors.resize(1);
@@ -288,6 +318,8 @@ MessageDecoder::MessageDecoder() {
   add<nav_status_t>(true);
   add<odometry_t>(true);
   add<pose2d_t>(true);
+  add<reflector_cluster_t>(false);
+  add<reflector_clusters_t>(true);
   add<reflector_detections_t>(true);
   add<reflector_match_t>(false);
   add<reflector_matches_t>(true);

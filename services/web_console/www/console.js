@@ -1,12 +1,12 @@
 // The console page: one WebSocket to web_console, frames kept in `state`, three views redrawn
 // on the next animation frame. No build step, no download: plain ES modules and Canvas.
 import { MapView } from './map_view.js';
-import { drawSensor } from './sensor_view.js';
+import { drawSensor, clusterSummary } from './sensor_view.js';
 import { renderHealth } from './health_view.js';
 
 const TRAIL_POINTS = 2000;  // points kept per trail in the page
 const state = {
-  map: null, scan: null, detections: null, matches: null, goal: null, navStatus: null,
+  map: null, scan: null, detections: null, clusters: null, matches: null, goal: null, navStatus: null,
   mapHealth: null, poses: {}, trails: { POSE: [], LASER_POSE: [], GROUND_TRUTH: [] },
   heartbeats: new Map(), console: { control_enabled: false }, localization: null,
 };
@@ -44,6 +44,7 @@ function renderLines() {
     : '';
   const s = state.scan;
   $('scan-line').textContent = s ? `${s.ranges_mm.length} beams, ${s.rssi_bits}-bit RSSI, page ≤ ${state.console.scan_rate_hz} Hz` : '';
+  $('cluster-line').textContent = s ? clusterSummary(state) : '';
 }
 
 function hasPose(f) { return f.channel !== 'LASER_POSE' || f.status === 'OK' || f.status === 'DEGRADED'; }
@@ -61,6 +62,7 @@ const handlers = {
   map: (f) => { const first = !state.map; state.map = f; if (first) mapView.fit(); },
   scan: (f) => { state.scan = f; },
   detections: (f) => { state.detections = f; },
+  clusters: (f) => { state.clusters = f; },
   matches: (f) => { state.matches = f; },
   // LASER_POSE without a pose (LOST, AMBIGUOUS, INITIALIZING) carries zeros: neither drawn nor trailed.
   pose: (f) => {

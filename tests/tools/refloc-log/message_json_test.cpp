@@ -16,6 +16,8 @@
 #include <refloc/nav_status_t.hpp>
 #include <refloc/odometry_t.hpp>
 #include <refloc/pose2d_t.hpp>
+#include <refloc/reflector_cluster_t.hpp>
+#include <refloc/reflector_clusters_t.hpp>
 #include <refloc/reflector_detections_t.hpp>
 #include <refloc/reflector_match_t.hpp>
 #include <refloc/reflector_matches_t.hpp>
@@ -60,6 +62,8 @@ TEST(MessageDecoder, KnowsEveryRefLocType) {
   expect_type_decodes<nav_status_t>(d, "nav_status_t");
   expect_type_decodes<odometry_t>(d, "odometry_t");
   expect_type_decodes<pose2d_t>(d, "pose2d_t");
+  expect_type_decodes<reflector_cluster_t>(d, "reflector_cluster_t");
+  expect_type_decodes<reflector_clusters_t>(d, "reflector_clusters_t");
   expect_type_decodes<reflector_detections_t>(d, "reflector_detections_t");
   expect_type_decodes<reflector_match_t>(d, "reflector_match_t");
   expect_type_decodes<reflector_matches_t>(d, "reflector_matches_t");
