@@ -90,6 +90,7 @@ int run_plan(const PlanOptions& o) {
     s.spacing = o.suggest_spacing_m;
     s.resolution = o.suggest_resolution_m;
     s.headings = o.suggest_headings;
+    s.swap_rounds = o.suggest_swap_rounds;
     PlanProgressBar suggest_bar(stderr, "suggesting", terminal);
     report.suggestions =
         suggest_reflectors(input.map, input.drivable, report.config, s, progress_of(suggest_bar, o.progress));

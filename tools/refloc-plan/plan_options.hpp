@@ -53,6 +53,12 @@ inline void add_plan_options(CLI::App& c, PlanOptions& o) {
   c.add_option("--suggest-headings", o.suggest_headings, "headings the suggestions are chosen at [-]")
       ->capture_default_str()
       ->check(CLI::Range(1, 360));
+  c.add_option(
+       "--suggest-swap-rounds", o.suggest_swap_rounds,
+       "after the greedy choice, rounds of swapping each suggestion for a better candidate; 0 = greedy "
+       "only [-]")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100));
   c.add_option("--measure-cells", o.measure_cells,
                "check the prediction: render scans at this many random cells (every heading) through "
                "refloc-eval's pipeline; needs --world; 0 = off [-]")

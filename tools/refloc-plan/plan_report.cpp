@@ -89,9 +89,13 @@ std::string plan_summary_text(const PlanReport& r) {
   if (!r.suggestions.empty()) {
     text += fmt::format("suggested reflectors ({}):\n", r.suggestions.size());
     for (const Suggestion& s : r.suggestions) {
-      text += fmt::format("  id {} at ({:.2f}, {:.2f}) m: bad poses {:.1f} % -> {:.1f} % (suggestion grid)\n",
-                          s.reflector.id, s.reflector.map_p_center.x(), s.reflector.map_p_center.y(),
-                          100.0 * s.bad_poses_before, 100.0 * s.bad_poses_after);
+      text += fmt::format(
+          "  id {} at ({:.2f}, {:.2f}) m: ambiguous poses {:.1f} % -> {:.1f} %, bad poses {:.1f} % -> {:.1f} "
+          "% "
+          "(suggestion grid)\n",
+          s.reflector.id, s.reflector.map_p_center.x(), s.reflector.map_p_center.y(),
+          100.0 * s.ambiguous_poses_before, 100.0 * s.ambiguous_poses_after, 100.0 * s.bad_poses_before,
+          100.0 * s.bad_poses_after);
     }
     text += "after adding them:\n" + summary_lines(r.plan_after.summary, c);
   }
@@ -132,7 +136,9 @@ std::string plan_json_text(const PlanReport& r) {
                                 {"y_m", s.reflector.map_p_center.y()},
                                 {"radius_m", s.reflector.radius},
                                 {"bad_poses_before", s.bad_poses_before},
-                                {"bad_poses_after", s.bad_poses_after}});
+                                {"bad_poses_after", s.bad_poses_after},
+                                {"ambiguous_poses_before", s.ambiguous_poses_before},
+                                {"ambiguous_poses_after", s.ambiguous_poses_after}});
   }
   if (!r.suggestions.empty()) {
     j["summary_after"] = summary_json(r.plan_after.summary);

@@ -181,6 +181,39 @@ TEST(PlacementSuggestions, CandidatesLieInsideTheHallOffTheWall) {
   }
 }
 
+TEST(PlacementSuggestions, AmbiguityCountsBeforeTheOtherBadPoses) {
+  SuggestionScore few_ambiguous{2, 40, 100.0}, more_ambiguous{3, 3, 100.0}, fewer_bad{2, 10, 100.0};
+  EXPECT_TRUE(better(few_ambiguous, more_ambiguous));
+  EXPECT_FALSE(better(more_ambiguous, few_ambiguous));
+  EXPECT_TRUE(better(fewer_bad, few_ambiguous));
+  EXPECT_FALSE(better(few_ambiguous, few_ambiguous));
+}
+
+TEST(PlacementSuggestions, SwapsAfterTheGreedyChoiceNeverLeaveMoreAmbiguity) {
+  const ReflectorMap map = symmetric_room();
+  PlanConfig plan_config;
+  plan_config.spot.samples = 51;  // the bound is far below the limit here: a coarse spot keeps it fast
+  SuggestionConfig config;
+  config.count = 2;
+  config.spacing = 1.5;
+  config.resolution = 1.0;
+  config.headings = 2;
+  const std::vector<sim::DrivableArea> drivable{{1.0, 1.0, 5.0, 3.0}};
+  config.swap_rounds = 0;
+  const auto greedy = suggest_reflectors(map, drivable, plan_config, config);
+  config.swap_rounds = 2;
+  const auto swapped = suggest_reflectors(map, drivable, plan_config, config);
+  ASSERT_EQ(greedy.size(), 2u);
+  ASSERT_EQ(swapped.size(), 2u);
+  EXPECT_LE(swapped.back().ambiguous_poses_after, greedy.back().ambiguous_poses_after);
+  if (swapped.back().ambiguous_poses_after == greedy.back().ambiguous_poses_after) {
+    EXPECT_LE(swapped.back().bad_poses_after, greedy.back().bad_poses_after);
+  }
+  // Before/after chain: each suggestion starts where the one before it ended.
+  EXPECT_DOUBLE_EQ(swapped[1].ambiguous_poses_before, swapped[0].ambiguous_poses_after);
+  EXPECT_GT((swapped[0].reflector.map_p_center - swapped[1].reflector.map_p_center).norm(), 0.12);
+}
+
 TEST(PlacementSuggestions, TwoReflectorsBreakTheSymmetricRoom) {
   const ReflectorMap map = symmetric_room();
   PlanConfig plan_config;
