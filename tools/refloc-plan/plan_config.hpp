@@ -47,6 +47,11 @@ struct PlanConfig {
   /// The matcher as deployed (deploy/config/reflector_matcher.json): range, field of view,
   /// triangle index, verification and the rival rule.
   MatcherConfig matcher;
+  /// A pose whose exact detections relocalize AMBIGUOUS (or wrong) is relocalized again this
+  /// many times with range_sigma of noise on each detection centre, and stays ambiguous only
+  /// when the noisy copies are (the rival rule's margin is often finer than the noise); 0 = the
+  /// exact verdict [-].
+  int rival_noise_samples = 8;
   /// Skip the relocalization check (no ambiguity figures; for quick CRLB-only grids).
   bool check_ambiguity = true;
 };

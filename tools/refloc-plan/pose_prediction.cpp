@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 namespace refloc {
 
@@ -91,28 +92,72 @@ PosePrediction PosePredictor::predict(const Pose2& map_T_robot) {
   }
   if (!relocalizer_ || out.visible < config_.matcher.min_matches) return out;
   relocalizer_->relocalize(detections_, match_);
+  out.relocalization = classify(match_, map_T_laser, out.map_T_robot_rival);
+  if (out.relocalization == Relocalization::kAmbiguous || out.relocalization == Relocalization::kWrong) {
+    confirm_rival(map_T_laser, out);
+  }
+  if (out.relocalization == Relocalization::kUnique) {
+    solver_.solve(detections_, match_.matches, solution_);
+    if (solution_.status == SolveStatus::kLost) out.relocalization = Relocalization::kNoPose;
+  }
+  return out;
+}
+
+Relocalization PosePredictor::classify(const MatchResult& match, const Pose2& map_T_laser,
+                                       Pose2& map_T_robot_rival) const {
   const RelocalizationConfig& r = config_.matcher.relocalization;
   const auto near_truth = [&](const Pose2& map_T_laser_estimate) {
     return approx_equal(map_T_laser_estimate, map_T_laser, r.distinct_pose_distance, r.distinct_pose_angle);
   };
   const Pose2 laser_T_robot = config_.robot_T_laser.inverse();
-  if (match_.status == MatchStatus::kLost) {
-    out.relocalization = Relocalization::kLost;
-  } else if (match_.status == MatchStatus::kOk) {
-    out.relocalization = near_truth(match_.map_T_laser) ? Relocalization::kUnique : Relocalization::kWrong;
-    if (out.relocalization == Relocalization::kWrong) {
-      out.map_T_robot_rival = match_.map_T_laser * laser_T_robot;
-    } else {
-      solver_.solve(detections_, match_.matches, solution_);
-      if (solution_.status == SolveStatus::kLost) out.relocalization = Relocalization::kNoPose;
-    }
-  } else {
-    out.relocalization = Relocalization::kAmbiguous;
-    // The rival is whichever of the best and the runner-up is not here.
-    const Pose2& rival = near_truth(match_.map_T_laser) ? match_.runner_up_map_T_laser : match_.map_T_laser;
-    out.map_T_robot_rival = rival * laser_T_robot;
+  if (match.status == MatchStatus::kLost) return Relocalization::kLost;
+  if (match.status == MatchStatus::kOk) {
+    if (near_truth(match.map_T_laser)) return Relocalization::kUnique;
+    map_T_robot_rival = match.map_T_laser * laser_T_robot;
+    return Relocalization::kWrong;
   }
-  return out;
+  // The rival is whichever of the best and the runner-up is not here.
+  const Pose2& rival = near_truth(match.map_T_laser) ? match.runner_up_map_T_laser : match.map_T_laser;
+  map_T_robot_rival = rival * laser_T_robot;
+  return Relocalization::kAmbiguous;
+}
+
+void PosePredictor::confirm_rival(const Pose2& map_T_laser, PosePrediction& out) {
+  const int samples = config_.rival_noise_samples;
+  if (samples <= 0) return;
+  // Seeded by the pose, so a plan is repeatable and a pose's verdict does not depend on the order.
+  std::seed_seq seed{static_cast<long>(std::lround(map_T_laser.x * 1e4)),
+                     static_cast<long>(std::lround(map_T_laser.y * 1e4)),
+                     static_cast<long>(std::lround(map_T_laser.theta * 1e6))};
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal(0.0, config_.range_sigma);
+  int unique = 0, ambiguous = 0, wrong = 0;
+  Pose2 rival;
+  for (int s = 0; s < samples; ++s) {
+    noisy_ = detections_;
+    for (ReflectorDetection& d : noisy_) {
+      d.laser_p_center += Eigen::Vector2d(normal(rng), normal(rng));
+      d.range = d.laser_p_center.norm();
+      d.bearing = std::atan2(d.laser_p_center.y(), d.laser_p_center.x());
+    }
+    relocalizer_->relocalize(noisy_, noisy_match_);
+    switch (classify(noisy_match_, map_T_laser, rival)) {
+      case Relocalization::kUnique:
+        ++unique;
+        break;
+      case Relocalization::kAmbiguous:
+        ++ambiguous;
+        break;
+      case Relocalization::kWrong:
+        ++wrong;
+        break;
+      default:
+        break;
+    }
+  }
+  // As the measurement counts a pose: ambiguous when any scan fixes at the wrong place or
+  // AMBIGUOUS is at least as frequent as a fix here.
+  if (wrong == 0 && unique > ambiguous) out.relocalization = Relocalization::kUnique;
 }
 
 }  // namespace refloc

@@ -63,6 +63,12 @@ class PosePredictor {
  private:
   /// Beams of the scan whose axis meets the reflector seen at range, bearing [m, rad].
   void add_beams(int map_index, double range, double bearing);
+  /// What a relocalization result means at the true map_T_laser; sets the rival's pose.
+  Relocalization classify(const MatchResult& match, const Pose2& map_T_laser, Pose2& map_T_robot_rival) const;
+  /// An AMBIGUOUS (or wrong) verdict on exact detections sits on the rival rule's margin more
+  /// often than not: relocalizes config.rival_noise_samples copies with the range noise added
+  /// and keeps "ambiguous" only when the copies are ambiguous as often as they fix here.
+  void confirm_rival(const Pose2& map_T_laser, PosePrediction& out);
 
   ReflectorMap map_;
   PlanConfig config_;
@@ -78,7 +84,9 @@ class PosePredictor {
   std::vector<int> visible_;
   std::vector<ReflectorBeam> beams_;
   std::vector<ReflectorDetection> detections_;
+  std::vector<ReflectorDetection> noisy_;
   MatchResult match_;
+  MatchResult noisy_match_;
 };
 
 }  // namespace refloc
