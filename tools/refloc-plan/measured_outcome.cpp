@@ -90,12 +90,24 @@ std::vector<PoseMeasurement> measure_plan(const sim::World& world, const Reflect
   return out;
 }
 
+namespace {
+
+/// Ambiguous is worse than blind, blind worse than ok.
+PoseOutcome worse(PoseOutcome a, PoseOutcome b) {
+  const auto rank = [](PoseOutcome o) {
+    return o == PoseOutcome::kAmbiguous ? 2 : o == PoseOutcome::kBlind ? 1 : 0;
+  };
+  return rank(a) >= rank(b) ? a : b;
+}
+
+}  // namespace
+
 MeasureSummary summarize_measurements(const std::vector<PoseMeasurement>& poses, int min_matches) {
   MeasureSummary s;
   s.poses = poses.size();
   std::vector<double> ratios, log_sigma, log_rmse;
   double errors2 = 0.0, variances = 0.0;
-  size_t agree = 0, cells_agree = 0;
+  size_t agree = 0, cells_agree = 0, worst_agree = 0;
   for (size_t i = 0; i < poses.size(); ++i) {
     const PoseMeasurement& m = poses[i];
     const PoseOutcome predicted = predicted_outcome(m.predicted, min_matches);
@@ -105,10 +117,16 @@ MeasureSummary summarize_measurements(const std::vector<PoseMeasurement>& poses,
     if (first_of_cell) {
       ++s.cells;
       bool all = true;
+      PoseOutcome worst_predicted = PoseOutcome::kOk, worst_measured = PoseOutcome::kOk;
       for (size_t k = i; k < poses.size() && poses[k].cell == m.cell; ++k) {
-        all = all && predicted_outcome(poses[k].predicted, min_matches) == poses[k].measured;
+        const PoseOutcome p = predicted_outcome(poses[k].predicted, min_matches);
+        all = all && p == poses[k].measured;
+        worst_predicted = worse(worst_predicted, p);
+        worst_measured = worse(worst_measured, poses[k].measured);
       }
       cells_agree += all;
+      worst_agree += worst_predicted == worst_measured;
+      ++s.cell_confusion[static_cast<int>(worst_predicted)][static_cast<int>(worst_measured)];
     }
     if (m.predicted.has_bound && m.fixes_here >= 2 && m.predicted.sigma_xy > 0.0 && m.rmse_xy > 0.0) {
       ratios.push_back(m.rmse_xy / m.predicted.sigma_xy);
@@ -121,6 +139,7 @@ MeasureSummary summarize_measurements(const std::vector<PoseMeasurement>& poses,
   if (s.poses == 0) return s;
   s.pose_agreement = static_cast<double>(agree) / static_cast<double>(s.poses);
   s.cell_agreement = static_cast<double>(cells_agree) / static_cast<double>(s.cells);
+  s.cell_worst_agreement = static_cast<double>(worst_agree) / static_cast<double>(s.cells);
   s.ratio_count = ratios.size();
   if (!ratios.empty()) {
     std::sort(ratios.begin(), ratios.end());
@@ -166,12 +185,19 @@ std::string measure_summary_text(const MeasureSummary& s, const MeasureConfig& c
   std::string text = fmt::format(
       "prediction vs rendered scans ({} cells x headings = {} poses, {} scans each, refloc-eval's pipeline "
       "without a prior):\n"
-      "  outcome agrees on {:.1f} % of poses, on every heading of {:.1f} % of cells\n"
+      "  outcome agrees on {:.1f} % of poses; on {:.1f} % of cells by the worst heading's outcome, on "
+      "every heading of {:.1f} % of cells\n"
       "  predicted \\ measured: ok / blind / ambiguous\n",
-      s.cells, s.poses, config.scans, 100.0 * s.pose_agreement, 100.0 * s.cell_agreement);
+      s.cells, s.poses, config.scans, 100.0 * s.pose_agreement, 100.0 * s.cell_worst_agreement,
+      100.0 * s.cell_agreement);
   for (int p = 0; p < 3; ++p) {
     text += fmt::format("    {:>9}: {} / {} / {}\n", to_string(static_cast<PoseOutcome>(p)),
                         s.confusion[p][0], s.confusion[p][1], s.confusion[p][2]);
+  }
+  text += "  cells (worst heading), predicted \\ measured: ok / blind / ambiguous\n";
+  for (int p = 0; p < 3; ++p) {
+    text += fmt::format("    {:>9}: {} / {} / {}\n", to_string(static_cast<PoseOutcome>(p)),
+                        s.cell_confusion[p][0], s.cell_confusion[p][1], s.cell_confusion[p][2]);
   }
   text += fmt::format(
       "  fix RMSE / CRLB sigma over {} poses: median {:.2f}, 10-90 % {:.2f}-{:.2f}, pooled {:.2f}; "

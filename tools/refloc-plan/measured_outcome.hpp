@@ -47,8 +47,12 @@ struct MeasureSummary {
   size_t poses = 0, cells = 0;
   double pose_agreement = 0.0;  ///< poses whose predicted outcome is the measured one [-]
   double cell_agreement = 0.0;  ///< cells whose every heading agrees [-]
-  int confusion[3][3] = {};     ///< [predicted][measured], PoseOutcome order [-]
-  size_t ratio_count = 0;       ///< poses with a bound and >= 2 fixes here [-]
+  /// Cells whose worst-heading outcome agrees (ambiguous if any heading is, else blind if any
+  /// is, else ok; predicted and measured alike) [-].
+  double cell_worst_agreement = 0.0;
+  int cell_confusion[3][3] = {};  ///< [predicted][measured] worst-heading outcome of the cells [-]
+  int confusion[3][3] = {};       ///< [predicted][measured], PoseOutcome order [-]
+  size_t ratio_count = 0;         ///< poses with a bound and >= 2 fixes here [-]
   double ratio_median = 0.0, ratio_p10 = 0.0, ratio_p90 = 0.0;  ///< RMSE / CRLB sigma [-]
   double ratio_pooled = 0.0;     ///< sqrt(sum of squared errors / sum of CRLB variances) [-]
   double log_correlation = 0.0;  ///< Pearson of log CRLB sigma and log RMSE [-]

@@ -312,6 +312,25 @@ TEST(MeasuredOutcome, TheSummaryCountsAgreementAndTheRmseOverCrlbRatio) {
   EXPECT_NEAR(s.ratio_pooled, std::sqrt((1.0 + 4.0 + 9.0 + 16.0) / 4.0), 1e-12);
 }
 
+TEST(MeasuredOutcome, ACellAgreesByItsWorstHeadingWhenItsHeadingsSwapOutcomes) {
+  // One cell: heading 0 predicted ok but measured blind, heading 1 the other way round. Every
+  // heading disagrees; the cell's worst outcome (blind) agrees.
+  std::vector<PoseMeasurement> poses(2);
+  poses[0].predicted.visible = 5;
+  poses[0].predicted.relocalization = Relocalization::kUnique;
+  poses[0].measured = PoseOutcome::kBlind;
+  poses[1].predicted.visible = 2;
+  poses[1].measured = PoseOutcome::kOk;
+  const MeasureSummary s = summarize_measurements(poses, 3);
+  EXPECT_DOUBLE_EQ(s.pose_agreement, 0.0);
+  EXPECT_DOUBLE_EQ(s.cell_agreement, 0.0);
+  EXPECT_DOUBLE_EQ(s.cell_worst_agreement, 1.0);
+  EXPECT_EQ(s.cell_confusion[1][1], 1);
+  poses[1].measured = PoseOutcome::kAmbiguous;  // ambiguous outranks blind
+  EXPECT_DOUBLE_EQ(summarize_measurements(poses, 3).cell_worst_agreement, 0.0);
+  EXPECT_EQ(summarize_measurements(poses, 3).cell_confusion[1][2], 1);
+}
+
 TEST(QuickLayoutCheck, TheSymmetricRoomLocalizesNowhereAndHalfBrokenSymmetryIsAmbiguousInPart) {
   const QuickLayoutCheck symmetric = quick_layout_check(symmetric_room(), "room.json");
   EXPECT_THAT(symmetric.warning, HasSubstr("room.json: the layout localizes nowhere: blind "));
