@@ -1,5 +1,6 @@
 #include "web_console/console_model.hpp"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -82,6 +83,7 @@ ConsoleFrame ConsoleModel::console_frame() const {
 }
 
 std::optional<ConsoleFrame> ConsoleModel::on_scan(const ConsoleScan& scan) {
+  ++scans_in_;
   if (!scan_rate_.accept(scan.utime)) {
     ++scans_skipped_;
     return std::nullopt;
@@ -167,7 +169,10 @@ std::optional<ConsoleFrame> ConsoleModel::on_pose(PoseSource source, const Conso
     ++fixes_;
     ok_fixes_ += pose.status == "OK" ? 1 : 0;
   }
-  if (source == PoseSource::kPose) pose_status_ = pose.status;
+  if (source == PoseSource::kPose) {
+    pose_status_ = pose.status;
+    ++poses_in_;
+  }
   if (!pose_rates_[i].accept(pose.utime)) return std::nullopt;
   const std::string name = pose_source_name(source);
   return frame({{"type", "pose"},
@@ -258,6 +263,24 @@ ConsoleFrame ConsoleModel::localization_frame(int64_t now_mono_us) {
   last_localization_mono_us_ = now_mono_us;
   fixes_ = ok_fixes_ = 0;
   return f;
+}
+
+ConsoleState ConsoleModel::state(int64_t now_mono_us) {
+  ConsoleState out;
+  const auto watch = [&](Silence& silence, int64_t count, const char* what) {
+    if (count != silence.count_seen || silence.changed_us < 0) {
+      silence.count_seen = count;
+      silence.changed_us = now_mono_us;
+    }
+    const int64_t quiet_us = now_mono_us - silence.changed_us;
+    // Counted from the console's start as well: a channel that never spoke is silent too.
+    if (quiet_us <= kSilentAfterUs) return;
+    out.ok = false;
+    out.detail += fmt::format("{}no {} for {:.0f} s", out.detail.empty() ? "" : "; ", what, 1e-6 * quiet_us);
+  };
+  watch(scan_silence_, scans_in_, "scan");
+  watch(pose_silence_, poses_in_, "POSE");
+  return out;
 }
 
 std::vector<ConsoleFrame> ConsoleModel::trail_frames() const {

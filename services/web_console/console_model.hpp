@@ -17,6 +17,12 @@
 
 namespace refloc {
 
+/// The console's own state for its HEARTBEAT.
+struct ConsoleState {
+  bool ok = true;
+  std::string detail;  ///< why not OK
+};
+
 /// The pose channels the console draws.
 enum class PoseSource { kPose, kLaserPose, kGroundTruth };
 const char* pose_source_name(PoseSource source);  ///< "POSE", "LASER_POSE", "GROUND_TRUTH"
@@ -47,6 +53,11 @@ class ConsoleModel {
   /// Localization at a glance, once a second: LASER_POSE fixes per second (all, and OK) since the
   /// last call at now_mono_us [monotonic us], and the latest POSE and REFLECTOR_MATCHES status.
   ConsoleFrame localization_frame(int64_t now_mono_us);
+  /// DEGRADED while the scan or the POSE channel has been silent for more than kSilentAfterUs
+  /// (a page that shows nothing must say why: a wrong channel name, a stopped driver or fusion);
+  /// call about once a second with the monotonic clock [us].
+  ConsoleState state(int64_t now_mono_us);
+  static constexpr int64_t kSilentAfterUs = 3'000'000;
   /// One snapshot frame per trail, kept for clients that connect later (not sent now).
   std::vector<ConsoleFrame> trail_frames() const;
 
@@ -67,6 +78,13 @@ class ConsoleModel {
   /// The latest OK matches' map_T_laser: where the page draws scans and detections.
   std::optional<std::array<double, 3>> map_T_laser_;
   int64_t scans_skipped_ = 0;
+  int64_t scans_in_ = 0;  ///< every scan, decimated or not
+  int64_t poses_in_ = 0;  ///< every POSE
+  struct Silence {
+    int64_t count_seen = -1;  ///< the count at the last state() call
+    int64_t changed_us = -1;  ///< when it last changed [monotonic us]
+  };
+  Silence scan_silence_, pose_silence_;
   std::set<std::string> kept_services_;
   int64_t fixes_ = 0;     ///< LASER_POSE messages since the last localization_frame
   int64_t ok_fixes_ = 0;  ///< of them with status OK

@@ -40,11 +40,10 @@ void show_all(ServiceRuntime& rt, ConsoleModel& model, ConsoleServer& server, co
   const std::pair<const std::string*, PoseSource> poses[] = {{&ch.pose, PoseSource::kPose},
                                                              {&ch.laser_pose, PoseSource::kLaserPose},
                                                              {&ch.ground_truth, PoseSource::kGroundTruth}};
-  for (const auto& [channel, source] : poses) {
+  for (const auto& [channel, source] : poses)
     show<pose2d_t>(rt, server, *channel, [&model, source = source](const pose2d_t& m) {
       return model.on_pose(source, from_message(m));
     });
-  }
   show<nav_goal_t>(rt, server, ch.nav_goal,
                    [&](const nav_goal_t& m) { return F(model.on_goal(from_message(m))); });
   show<nav_status_t>(rt, server, ch.nav_status,
@@ -62,8 +61,9 @@ int run(const std::string& lcm_url, const std::string& config_path) {
                        load_www_files(www));
   ConsoleModel model(config.model, load_reflector_map(config.map_file), config.control.enabled);
   ServiceRuntime runtime("web_console", lcm_url);
-  server.send(model.map_frame());
-  server.send(model.console_frame());
+  const std::string url =
+      "http://" + config.server.listen_address + ":" + std::to_string(config.server.port) + "/";
+  for (const ConsoleFrame& frame : {model.map_frame(), model.console_frame()}) server.send(frame);
   show_all(runtime, model, server, config.channels);
   runtime.add_periodic(0.02, [&] {  // the page's commands, published from the LCM thread
     for (const ConsoleCommand& command : server.take_commands()) {
@@ -80,10 +80,10 @@ int run(const std::string& lcm_url, const std::string& config_path) {
     server.send(model.localization_frame(monotonic_us()));
     for (const auto& [name, value] : server.counters()) runtime.counter(name) = value;
     runtime.counter("scans_skipped") = model.scans_skipped();
+    const ConsoleState s = model.state(monotonic_us());  // the URL while OK
+    runtime.set_state(s.ok ? heartbeat_t::STATE_OK : heartbeat_t::STATE_DEGRADED, s.ok ? url : s.detail);
   });
   server.start();
-  runtime.set_state(heartbeat_t::STATE_OK, "http://" + config.server.listen_address + ":" +
-                                               std::to_string(config.server.port) + "/");
   return runtime.run();
 }
 

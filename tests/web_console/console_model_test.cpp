@@ -89,6 +89,31 @@ TEST(ConsoleModel, ClustersReachThePageForTheSameScansWithTheThresholdAndEachOut
   EXPECT_EQ(both, scans_sent) << "the page draws a scan's clusters only with that scan";
 }
 
+TEST(ConsoleModel, TheConsoleIsDegradedWhileNoScanOrNoPoseArrivesAndSaysWhich) {
+  ConsoleModel model = demo_model();
+  constexpr int64_t kS = 1'000'000;
+  EXPECT_TRUE(model.state(10 * kS).ok);  // just started
+  EXPECT_TRUE(model.state(13 * kS).ok);  // 3 s: not yet
+  const ConsoleState silent = model.state(14 * kS);
+  EXPECT_FALSE(silent.ok);
+  EXPECT_EQ(silent.detail, "no scan for 4 s; no POSE for 4 s");
+  ConsoleScan scan;
+  scan.utime = 5 * kS;
+  model.on_scan(scan);
+  ConsolePose pose;
+  pose.utime = 5 * kS;
+  pose.status = "OK";
+  model.on_pose(PoseSource::kPose, pose);
+  EXPECT_TRUE(model.state(15 * kS).ok);
+  model.on_scan(scan);  // scans go on, POSE stops (and a LASER_POSE is no POSE)
+  model.on_pose(PoseSource::kLaserPose, pose);
+  EXPECT_TRUE(model.state(17 * kS).ok);
+  model.on_scan(scan);
+  const ConsoleState no_pose = model.state(18'500'000);
+  EXPECT_FALSE(no_pose.ok);
+  EXPECT_EQ(no_pose.detail, "no POSE for 4 s");
+}
+
 TEST(ConsoleModel, ScansAreDrawnFromTheLatestOkMatchesHypothesis) {
   ConsoleModel model = demo_model();
   ConsoleMatches matches;
