@@ -17,7 +17,7 @@ struct SuggestionConfig {
   double spacing = 1.0;     ///< between candidates along a mounting line [m]
   double radius = 0.06;     ///< of the added reflectors [m]
   double resolution = 0.5;  ///< grid the choice is planned on [m]
-  int headings = 4;         ///< headings the choice is planned at [-]
+  int headings = 8;         ///< headings the choice is planned at (ambiguity is heading-specific) [-]
   /// Rounds of swaps after the greedy choice (each tries every candidate in each chosen place;
   /// they stop early when a round changes nothing) [-].
   int swap_rounds = 2;

@@ -24,7 +24,7 @@ struct PlanOptions {
   int suggest = 0;
   double suggest_spacing_m = 1.0;
   double suggest_resolution_m = 0.5;
-  int suggest_headings = 4;
+  int suggest_headings = 8;
   int suggest_swap_rounds = 2;
   int measure_cells = 0;
   int measure_scans = 5;
