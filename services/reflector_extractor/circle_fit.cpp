@@ -1,3 +1,5 @@
+// The circle fits and their one residual model (central ray, beam spot, wall behind, second-order
+// bias); longer than 300 lines because the fits and the model they share read best side by side.
 #include "reflector_extractor/circle_fit.hpp"
 
 #include <Eigen/Dense>
@@ -28,7 +30,12 @@ constexpr std::array<double, 8> kGaussWeight = {0.1012285362903763, 0.2223810344
 // the Gaussian weight exp(-2 y^2 / h^2) (1/e^2 at the rim h) and meets the circle at
 // along - sqrt(r^2 - (y - across)^2). Integrated over the chord angle phi, y = across + r sin(phi),
 // the integrand is smooth, so the mean moves smoothly with the centre and Gauss-Newton converges.
-double spot_mean_range(double along, double across, double radius, double half_width) {
+// With a background (a finite background_range), the rest of the spot's weight lands there with
+// background_ratio of the reflector's energy per unit weight, and the echo is the energy-weighted
+// mean of the two ranges.
+double spot_mean_range(double along, double across, double radius, double half_width,
+                       double background_range = std::numeric_limits<double>::quiet_NaN(),
+                       double background_ratio = 0.0) {
   const double lo = std::max(-half_width, across - radius);
   const double hi = std::min(half_width, across + radius);
   if (!(hi > lo)) return std::numeric_limits<double>::quiet_NaN();
@@ -48,7 +55,48 @@ double spot_mean_range(double along, double across, double radius, double half_w
     depth += w * c;
   }
   if (!(weight > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-  return along - radius * depth / weight;
+  const double on_cylinder = along - radius * depth / weight;
+  if (!std::isfinite(background_range) || !(background_ratio > 0.0)) return on_cylinder;
+  // The spot's whole weight, the integral of exp(-2 y^2 / h^2) over [-h, h], against the part on
+  // the circle (the sum above is that integral over phi without its factor r * half).
+  const double whole = half_width * std::sqrt(M_PI / 2.0) * std::erf(std::sqrt(2.0));
+  const double covered = std::min(radius * half * weight, whole);
+  const double beside = background_ratio * (whole - covered);
+  return (covered * on_cylinder + beside * background_range) / (covered + beside);
+}
+
+// The second-order bias of the least-squares centre (Box 1971), along `axis` only: each beam's
+// predicted range is on average half its curvature times the centre's covariance longer than at
+// the centre, which the fit answers by moving the centre; the move that undoes it. The Hessian of
+// each beam's prediction comes from central differences of its Jacobian.
+double second_order_bias_along(const std::vector<FitBeam>& beams, double radius,
+                               const KnownRadiusFitConfig& config, const Eigen::Vector2d& center,
+                               const Eigen::Vector2d& axis) {
+  Eigen::Matrix2d information = Eigen::Matrix2d::Zero();
+  for (const FitBeam& b : beams) {
+    Eigen::Vector2d jac;
+    range_residual(b, center, radius, config, &jac);
+    information += b.weight * jac * jac.transpose();
+  }
+  if (!(information.determinant() > 1e-12 * information.trace() * information.trace())) return 0.0;
+  const Eigen::Matrix2d covariance = information.inverse();
+  constexpr double kStep = 1e-4;  // [m]: well inside the model's smooth part, far above its 1e-6 steps
+  Eigen::Vector2d gradient = Eigen::Vector2d::Zero();
+  for (const FitBeam& b : beams) {
+    Eigen::Vector2d jac;
+    range_residual(b, center, radius, config, &jac);
+    Eigen::Matrix2d hessian;
+    for (int k = 0; k < 2; ++k) {
+      Eigen::Vector2d plus, minus;
+      range_residual(b, center + kStep * Eigen::Vector2d::Unit(k), radius, config, &plus);
+      range_residual(b, center - kStep * Eigen::Vector2d::Unit(k), radius, config, &minus);
+      hessian.col(k) = (plus - minus) / (2.0 * kStep);
+    }
+    const double mean_excess = 0.5 * (0.5 * (hessian + hessian.transpose()) * covariance).trace();
+    if (std::isfinite(mean_excess)) gradient += b.weight * jac * mean_excess;
+  }
+  const Eigen::Vector2d bias = -covariance * gradient;
+  return bias.dot(axis);
 }
 
 // Gauss-Newton on the centre from `center`; the number of iterations, -1 when a step is not finite.
@@ -88,18 +136,28 @@ double range_residual(const FitBeam& beam, const Eigen::Vector2d& center, double
     const double across = origin_to_center.dot(lateral);
     const double half_width =
         0.5 * config.spot.exit_diameter_m + std::max(along, 0.0) * std::tan(0.5 * config.spot.divergence_rad);
-    const double predicted = spot_mean_range(along, across, radius, half_width);
+    const bool background = config.spot.background && std::isfinite(beam.background_range);
+    const double bg_range = background ? beam.background_range : std::numeric_limits<double>::quiet_NaN();
+    const double bg_ratio = background ? beam.background_energy_ratio : 0.0;
+    const double predicted = spot_mean_range(along, across, radius, half_width, bg_range, bg_ratio);
     if (std::isfinite(predicted) && half_width > 0.0) {
-      // d/d along = 1; across and radius by forward differences (1e-6 m moves the chord's
-      // ends smoothly; the analytic form has boundary terms at the spot's rim).
+      // d/d along = 1 on the cylinder alone (the background's share stays behind); across, radius
+      // and, with a background, along by forward differences (1e-6 m moves the chord's ends
+      // smoothly; the analytic form has boundary terms at the spot's rim).
       constexpr double kStep = 1e-6;
       if (d_center != nullptr) {
-        const double moved = spot_mean_range(along, across + kStep, radius, half_width);
+        const double moved = spot_mean_range(along, across + kStep, radius, half_width, bg_range, bg_ratio);
         const double d_across = std::isfinite(moved) ? (moved - predicted) / kStep : 0.0;
-        *d_center = beam.direction + d_across * lateral;
+        double d_along = 1.0;
+        if (background) {
+          const double pushed =
+              spot_mean_range(along + kStep, across, radius, half_width, bg_range, bg_ratio);
+          d_along = std::isfinite(pushed) ? (pushed - predicted) / kStep : 1.0;
+        }
+        *d_center = d_along * beam.direction + d_across * lateral;
       }
       if (d_radius != nullptr) {
-        const double grown = spot_mean_range(along, across, radius + kStep, half_width);
+        const double grown = spot_mean_range(along, across, radius + kStep, half_width, bg_range, bg_ratio);
         *d_radius = std::isfinite(grown) ? (grown - predicted) / kStep : -1.0;
       }
       return predicted - beam.range;
@@ -205,6 +263,12 @@ bool fit_circle_known_radius(const std::vector<FitBeam>& beams, double radius,
     const int fitted = gauss_newton_centre(beams, radius, config, center);
     if (fitted < 0) return false;
     iteration += fitted;
+  }
+  if (config.second_order_bias_correction && beams.size() >= 2) {
+    const Eigen::Vector2d line_of_sight = center.normalized();
+    const double bias = second_order_bias_along(beams, radius, config, center, line_of_sight);
+    // A bias beyond a quarter radius is no second-order effect: a degenerate geometry, left alone.
+    if (std::isfinite(bias) && std::abs(bias) < 0.25 * radius) center -= bias * line_of_sight;
   }
   // The covariance is the central-ray fit's: its lateral estimate is the one kept, and the
   // spot's correction along the line of sight is a systematic one (NEES over 0.5-6 m stays

@@ -1,6 +1,7 @@
 #include "reflector_extractor/extractor.hpp"
 
 #include "reflector_extractor/energy_filter.hpp"
+#include "reflector_extractor/spot_background.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -64,6 +65,12 @@ ExtractorConfig ExtractorConfig::paper() {
   config.clustering.max_gap_beams = -1;
   config.min_beams = 3;  // d-bar without the first and last point needs a third
   config.paper_centre = PaperCentreReading::kKnownRadius;
+  return config;
+}
+
+ExtractorConfig mapping_corrections(ExtractorConfig config) {
+  config.fit.spot.background = true;
+  config.fit.second_order_bias_correction = true;
   return config;
 }
 
@@ -134,6 +141,10 @@ void ReflectorExtractor::gather_beams(const BeamTable& table, const BeamCluster&
     beams_.push_back(b);
     beam_rssi_.push_back(t.rssi_8bit);
   }
+  if (config_.mode == ExtractorConfig::Mode::kDefault && config_.fit.spot.applies() &&
+      config_.fit.spot.background)
+    find_spot_background(table, cluster, high_energy_, beam_rssi_,
+                         config_.fit.spot.background_merge_distance_m, beams_);
 }
 
 bool ReflectorExtractor::occluded(const BeamTable& table, const BeamCluster& cluster) const {

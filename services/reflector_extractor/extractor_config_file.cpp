@@ -184,6 +184,24 @@ ExtractorServiceConfig parse_extractor_service_config(const JsonConfig& c) {
                             "model the beam spot in the centre fit; false fits each beam's central ray "
                             "(reflector centres up to ~10 mm too far beyond 8 m with an LMS100)"},
                            spot.enabled);
+  spot.background = c.boolean({"/default/fit/spot/background", "",
+                               "model the surface a reflector stands in front of (a wall within "
+                               "background_merge_distance_m behind it, read from the dull beams beside the "
+                               "cluster): the part of a beam's spot that misses the cylinder lands there and "
+                               "blends into its echo, reading it long; off: less variance for single-scan "
+                               "fixes (refloc-survey drive turns it on for maps)"},
+                              spot.background);
+  spot.background_merge_distance_m = c.number(
+      {"/default/fit/spot/background_merge_distance_m", "m",
+       "returns along one beam closer than this blend into one echo (about the pulse's length): a surface "
+       "farther behind the reflector's edge is not its background"},
+      spot.background_merge_distance_m, 0.0, 5.0);
+  e.fit.second_order_bias_correction = c.boolean(
+      {"/default/fit/second_order_bias_correction", "",
+       "remove the centre fit's second-order bias along the line of sight (half the model's curvature times "
+       "the centre's covariance; 1-3 mm too close at 3-6 m without it); off: less variance for single-scan "
+       "fixes (refloc-survey drive turns it on for maps)"},
+      e.fit.second_order_bias_correction);
   KnownRadiusRoundnessConfig& r = e.roundness;
   r.lateral_margin = c.number({"/default/roundness/lateral_margin_m", "m",
                                "a cluster wider across the line of sight than the diameter plus this is no "

@@ -97,6 +97,10 @@ CLI::App* add_drive_command(CLI::App& app, DriveCommandOptions& o) {
   c->add_flag("--force", o.force, "replace an existing --out");
   c->add_flag("!--no-range-bias", o.estimate_range_bias,
               "hold the LMS100's range bias at 0 instead of estimating it");
+  c->add_flag("!--as-service", o.mapping_corrections,
+              "extract exactly as the service does; by default the survey models the wall behind a "
+              "reflector and removes the centre fit's second-order bias, which a map's long averages "
+              "need (README)");
   return c;
 }
 
@@ -105,7 +109,8 @@ int run_drive_command(const DriveCommandOptions& o) {
   if (!o.force && std::filesystem::exists(o.out_path))
     throw ConfigError(o.out_path + ": exists; give --force to replace it");
   const RobotConfig robot = load_robot_config(o.robot_path);
-  const ExtractorServiceConfig extractor = load_extractor_service_config(o.extractor_path);
+  ExtractorServiceConfig extractor = load_extractor_service_config(o.extractor_path);
+  if (o.mapping_corrections) extractor.extractor = mapping_corrections(extractor.extractor);
   const std::vector<SurveyAnchor> anchors =
       o.anchors_path.empty() ? std::vector<SurveyAnchor>{} : load_survey_anchors(o.anchors_path);
   const std::vector<DriveScan> scans = read_scans(o, extractor, robot.robot_T_laser);

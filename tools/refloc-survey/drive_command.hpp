@@ -21,6 +21,8 @@ struct DriveCommandOptions {
   std::string map_id = "surveyed";
   std::vector<double> start_pose = {0.0, 0.0, 0.0};  ///< x_m, y_m, theta_rad
   bool estimate_range_bias = true;
+  /// Extract with mapping_corrections() (the wall behind, the fit's second-order bias).
+  bool mapping_corrections = true;
   bool force = false;  ///< replace an existing out_path
 };
 
