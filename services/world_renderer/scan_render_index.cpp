@@ -36,6 +36,18 @@ void BeamCandidateIndex::add_interval(int32_t code, double lo, double hi) {
 
 void BeamCandidateIndex::build(const World& world, const std::vector<Pose2>& beam_poses, double start_angle,
                                double angle_increment, const BeamProfile& profile, double max_range) {
+  build_from(world, nullptr, beam_poses, start_angle, angle_increment, profile, max_range);
+}
+
+void BeamCandidateIndex::build(const World& world, const std::vector<int>& reflectors,
+                               const std::vector<Pose2>& beam_poses, double start_angle,
+                               double angle_increment, const BeamProfile& profile, double max_range) {
+  build_from(world, &reflectors, beam_poses, start_angle, angle_increment, profile, max_range);
+}
+
+void BeamCandidateIndex::build_from(const World& world, const std::vector<int>* listed,
+                                    const std::vector<Pose2>& beam_poses, double start_angle,
+                                    double angle_increment, const BeamProfile& profile, double max_range) {
   num_beams_ = beam_poses.size();
   start_angle_ = start_angle;
   angle_increment_ = angle_increment;
@@ -57,7 +69,9 @@ void BeamCandidateIndex::build(const World& world, const std::vector<Pose2>& bea
   const bool usable = angle_increment > 0.0 && std::isfinite(radius) && std::isfinite(pad);
 
   const auto& reflectors = world.reflectors.reflectors;
-  for (size_t i = 0; i < reflectors.size(); ++i) {
+  const size_t count = listed != nullptr ? listed->size() : reflectors.size();
+  for (size_t k = 0; k < count; ++k) {
+    const size_t i = listed != nullptr ? static_cast<size_t>((*listed)[k]) : k;
     const int32_t code = static_cast<int32_t>(i);
     const Eigen::Vector2d c = laser_T_map * reflectors[i].map_p_center;
     const double distance = c.norm();

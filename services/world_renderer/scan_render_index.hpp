@@ -8,6 +8,9 @@
 // moves (R, plus the spot's exit radius), and by the beam's half divergence. Any
 // beam outside a primitive's widened interval provably misses it, so the rendered
 // scan is identical to testing everything (a test checks this).
+//
+// On a large map, building it still visits every reflector; the second build() takes the
+// reflectors near the sensor (e.g. from a grid query) and costs what is in reach, not the map.
 
 #include "common/se2.hpp"
 #include "world_renderer/scan_render_beam.hpp"
@@ -25,6 +28,13 @@ class BeamCandidateIndex {
   void build(const World& world, const std::vector<Pose2>& beam_poses, double start_angle,
              double angle_increment, const BeamProfile& profile, double max_range);
 
+  /// The same, indexing only the reflectors listed (indices into world.reflectors.reflectors,
+  /// ascending, so the candidates keep World's order): the caller guarantees that every other
+  /// reflector's centre is farther than max_range + its radius + half_exit_diameter from every
+  /// beam pose, so the candidates are exactly build()'s. Segments are all indexed.
+  void build(const World& world, const std::vector<int>& reflectors, const std::vector<Pose2>& beam_poses,
+             double start_angle, double angle_increment, const BeamProfile& profile, double max_range);
+
   /// Primitives beam i may hit (encoding in BeamCandidates).
   BeamCandidates candidates(size_t beam) const {
     return {entries_.data() + offsets_[beam], entries_.data() + offsets_[beam + 1]};
@@ -35,6 +45,10 @@ class BeamCandidateIndex {
  private:
   void add_interval(int32_t code, double lo, double hi);
   void add_all(int32_t code);
+  /// Shared by both builds: reflectors (null: all of them), every segment, then the lists.
+  void build_from(const World& world, const std::vector<int>* reflectors,
+                  const std::vector<Pose2>& beam_poses, double start_angle, double angle_increment,
+                  const BeamProfile& profile, double max_range);
 
   struct Span {
     int32_t code;

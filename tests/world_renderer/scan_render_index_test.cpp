@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 namespace refloc::sim {
 namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
@@ -81,6 +83,41 @@ TEST(BeamCandidateIndex, KeepsFewCandidatesPerBeamInTheDemoHall) {
   const double per_beam = static_cast<double>(index.size()) / 541.0;
   const double everything = static_cast<double>(world.reflectors.reflectors.size() + world.segments.size());
   EXPECT_LT(per_beam, 0.25 * everything) << per_beam << " of " << everything;
+}
+
+TEST(BeamCandidateIndex, ListingTheReflectorsInReachGivesTheSameCandidates) {
+  // 200 reflectors over 60 m x 60 m; the listed ones are those within reach of the sensor
+  // (what refloc-plan takes from a grid query), the candidates must be build()'s exactly.
+  World world;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> coordinate(0.0, 60.0);
+  for (int i = 0; i < 200; ++i) {
+    MapReflector r;
+    r.id = i + 1;
+    r.map_p_center = {coordinate(rng), coordinate(rng)};
+    world.reflectors.reflectors.push_back(r);
+  }
+  add_polyline(world, {{0, 0}, {60, 0}, {60, 60}, {0, 60}}, true, SurfaceKind::kDiffuse, 0.5);
+  ScanRenderer renderer;
+  const double reach = 20.0;
+  for (int k = 0; k < 10; ++k) {
+    const std::vector<Pose2> poses(541, Pose2{coordinate(rng), coordinate(rng), 0.6 * k});
+    std::vector<int> near;
+    for (size_t i = 0; i < world.reflectors.reflectors.size(); ++i) {
+      const double d = (world.reflectors.reflectors[i].map_p_center - poses[0].translation()).norm();
+      if (d <= reach + 0.06 + renderer.profile().half_exit_diameter + 0.01)
+        near.push_back(static_cast<int>(i));
+    }
+    ASSERT_LT(near.size(), world.reflectors.reflectors.size());
+    BeamCandidateIndex all, listed;
+    all.build(world, poses, -135.0 * M_PI / 180.0, 0.5 * M_PI / 180.0, renderer.profile(), reach);
+    listed.build(world, near, poses, -135.0 * M_PI / 180.0, 0.5 * M_PI / 180.0, renderer.profile(), reach);
+    ASSERT_EQ(all.size(), listed.size());
+    for (size_t b = 0; b < 541; ++b) {
+      const BeamCandidates a = all.candidates(b), l = listed.candidates(b);
+      ASSERT_TRUE(std::equal(a.begin, a.end, l.begin, l.end)) << "pose " << k << " beam " << b;
+    }
+  }
 }
 
 }  // namespace REFLOC_UNITY_ID

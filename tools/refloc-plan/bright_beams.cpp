@@ -18,7 +18,7 @@ sim::World beam_world_of(const ReflectorMap& map) {
   return world;
 }
 
-BrightBeamCounter::BrightBeamCounter(const ReflectorMap& map, const PlanConfig& config)
+BrightBeamCounter::BrightBeamCounter(const ReflectorMap& map, const PlanConfig& config, bool brute_force)
     : map_(map),
       scan_(config.scan),
       sensor_(config.sensor),
@@ -26,9 +26,32 @@ BrightBeamCounter::BrightBeamCounter(const ReflectorMap& map, const PlanConfig& 
       reject_occluded_(config.extractor.reject_occluded),
       occlusion_margin_(config.extractor.occlusion_margin),
       world_(beam_world_of(map)),
-      profile_(sim::make_beam_profile(config.sensor)) {}
+      profile_(sim::make_beam_profile(config.sensor)),
+      brute_force_(brute_force),
+      reach_(config.sensor.range_max + config.sensor.echo_merge_distance + 0.1),
+      grid_(world_.reflectors, 0.5 * reach_) {
+  for (const MapReflector& r : world_.reflectors.reflectors)
+    largest_radius_ = std::max(largest_radius_, r.radius);
+}
 
-int BrightBeamCounter::count(const Pose2& map_T_laser, int map_index) const {
+void BrightBeamCounter::index_scan(const Pose2& map_T_laser) {
+  if (indexed_ && map_T_laser.x == indexed_pose_.x && map_T_laser.y == indexed_pose_.y &&
+      map_T_laser.theta == indexed_pose_.theta) {
+    return;
+  }
+  // Every reflector the index could keep: centre within reach + radius + the spot's exit radius
+  // (BeamCandidateIndex's own test), with a centimetre to spare.
+  nearby_.clear();
+  grid_.query(map_T_laser.translation(), reach_ + largest_radius_ + profile_.half_exit_diameter + 0.01,
+              nearby_);
+  std::sort(nearby_.begin(), nearby_.end());
+  beam_poses_.assign(static_cast<size_t>(std::max(scan_.num_beams, 0)), map_T_laser);
+  index_.build(world_, nearby_, beam_poses_, scan_.start_angle, scan_.angle_increment, profile_, reach_);
+  indexed_ = true;
+  indexed_pose_ = map_T_laser;
+}
+
+int BrightBeamCounter::count(const Pose2& map_T_laser, int map_index) {
   const MapReflector& r = map_.reflectors[static_cast<size_t>(map_index)];
   const Eigen::Vector2d laser_p = map_T_laser.inverse() * r.map_p_center;
   const double range = laser_p.norm();
@@ -42,9 +65,13 @@ int BrightBeamCounter::count(const Pose2& map_T_laser, int map_index) const {
   const int last = std::min(
       scan_.num_beams - 1,
       static_cast<int>(std::floor((bearing + half_width - scan_.start_angle) / scan_.angle_increment)));
+  if (!brute_force_) index_scan(map_T_laser);
   const auto trace = [&](int b) {
     const double angle = map_T_laser.theta + scan_.start_angle + b * scan_.angle_increment;
-    return sim::trace_beam(world_, profile_, sensor_, map_T_laser.translation(), angle);
+    const sim::BeamCandidates candidates =
+        brute_force_ ? sim::BeamCandidates{} : index_.candidates(static_cast<size_t>(b));
+    return sim::trace_beam(world_, profile_, sensor_, map_T_laser.translation(), angle,
+                           brute_force_ ? nullptr : &candidates);
   };
   const auto is_bright = [&](const sim::BeamEcho& echo) {
     // The extractor's own reading of a 16-bit RSSI on its 8-bit scale.

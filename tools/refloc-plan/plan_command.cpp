@@ -28,6 +28,7 @@ PlanConfig plan_config(const PlanOptions& o) {
   c.range_sigma = 1e-3 * o.range_sigma_mm;
   c.spot.samples = o.spot_samples;
   c.check_ambiguity = o.ambiguity;
+  c.threads = o.threads;
   c.robot_T_laser = load_robot_config(o.robot_file).robot_T_laser;
   // The services' files read as the measurement reads them (default mode).
   const PipelineConfigs services =

@@ -1,8 +1,10 @@
 #pragma once
 // refloc-plan's run: read the inputs, plan the grid, suggest, write the report and draw it.
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
+#include <thread>
 
 namespace refloc {
 
@@ -28,6 +30,8 @@ struct PlanOptions {
   int suggest_swap_rounds = 2;
   int measure_cells = 0;
   int measure_scans = 5;
+  /// Threads predicting the grid's cells (the plan, the suggestions' trial plans) [-].
+  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   uint64_t seed = 1;
   std::string out_dir = "logs/refloc-plan";
   bool plot = true;

@@ -54,6 +54,9 @@ struct PlanConfig {
   int rival_noise_samples = 8;
   /// Skip the relocalization check (no ambiguity figures; for quick CRLB-only grids).
   bool check_ambiguity = true;
+  /// Threads predicting cells, each with its own predictor on the shared map index; the plan is
+  /// the same for any number (each cell is predicted alone) [-].
+  int threads = 1;
 };
 
 }  // namespace refloc

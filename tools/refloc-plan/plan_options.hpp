@@ -69,6 +69,11 @@ inline void add_plan_options(CLI::App& c, PlanOptions& o) {
       ->check(CLI::Range(1, 1000));
   c.add_option("--seed", o.seed, "random seed of the measured cells and the sensor noise")
       ->capture_default_str();
+  c.add_option("--threads", o.threads,
+               "threads predicting the grid's cells, each with its own matcher and beam tracer; the plan "
+               "is the same for any number (default: the machine's hardware threads) [-]")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1024));
   c.add_option("--extractor-config", o.extractor_file,
                "reflector_extractor config: energy threshold and min_beams (a reflector is seen when that "
                "many beams are bright), and the measurement's")

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -80,11 +81,11 @@ std::string plan_summary_text(const PlanReport& r) {
   std::string text = fmt::format(
       "refloc-plan: {}\n{} reflectors, {} occluders; grid {} m, {} headings; a reflector seen with {} beams "
       "of RSSI >= {:.0f}; "
-      "range {}-{} m, field of view {:.0f} deg; CRLB limit {:.1f} mm; {:.1f} s\n",
+      "range {}-{} m, field of view {:.0f} deg; CRLB limit {:.1f} mm; {:.1f} s on {} thread{}\n",
       r.map_name, r.map.reflectors.size(), r.map.occluders.size(), c.resolution, c.headings,
       c.extractor.min_beams, c.extractor.energy_threshold_8bit, c.matcher.sensor.min_range,
       c.matcher.sensor.max_range, c.matcher.sensor.field_of_view * 180.0 / M_PI, 1e3 * c.crlb_limit,
-      r.runtime_s);
+      r.runtime_s, std::max(c.threads, 1), c.threads > 1 ? "s" : "");
   text += "area fractions (worst heading):\n" + summary_lines(r.plan.summary, c);
   if (!r.suggestions.empty()) {
     text += fmt::format("suggested reflectors ({}):\n", r.suggestions.size());
@@ -115,6 +116,7 @@ std::string plan_json_text(const PlanReport& r) {
   j["min_beams"] = c.extractor.min_beams;
   j["energy_threshold_8bit"] = c.extractor.energy_threshold_8bit;
   j["runtime_s"] = r.runtime_s;
+  j["threads"] = std::max(c.threads, 1);
   j["reflectors"] = reflectors_json(r.map);
   j["occluders"] = nlohmann::json::array();
   for (const MapOccluder& o : r.map.occluders) {

@@ -24,20 +24,37 @@ const char* to_string(Relocalization r) {
   return "?";
 }
 
+namespace {
+
+std::unique_ptr<const MapTriangleIndex> triangle_index(const ReflectorMap& map, const PlanConfig& config) {
+  if (!config.check_ambiguity) return nullptr;
+  const RelocalizationConfig& r = config.matcher.relocalization;
+  return std::make_unique<const MapTriangleIndex>(map, r.side_tolerance, r.min_triangle_side,
+                                                  r.max_triangle_side,
+                                                  static_cast<size_t>(r.max_index_triangles));
+}
+
+}  // namespace
+
+PlanMapIndex::PlanMapIndex(ReflectorMap map_in, const PlanConfig& config)
+    : map(std::move(map_in)),
+      grid(map, 0.5 * config.matcher.sensor.max_range),  // the matcher's own cell size
+      occluders(map.occluders),
+      triangles(triangle_index(map, config)) {}
+
 PosePredictor::PosePredictor(ReflectorMap map, const PlanConfig& config)
-    : map_(std::move(map)),
+    : PosePredictor(std::make_shared<const PlanMapIndex>(std::move(map), config), config) {}
+
+PosePredictor::PosePredictor(std::shared_ptr<const PlanMapIndex> index, const PlanConfig& config)
+    : shared_(std::move(index)),
+      map_(shared_->map),
       config_(config),
-      grid_(map_, 0.5 * config.matcher.sensor.max_range),  // the matcher's own cell size
-      occluders_(map_.occluders),
       bright_beams_(map_, config),
       solver_(config.solver, config.robot_T_laser) {
-  if (config_.check_ambiguity) {
-    const RelocalizationConfig& r = config_.matcher.relocalization;
-    index_ =
-        std::make_unique<MapTriangleIndex>(map_, r.side_tolerance, r.min_triangle_side, r.max_triangle_side,
-                                           static_cast<size_t>(r.max_index_triangles));
-    relocalizer_ = std::make_unique<GlobalRelocalizer>(map_, grid_, *index_, r, config_.matcher.sensor,
-                                                       config_.matcher.min_matches, &occluders_);
+  if (config_.check_ambiguity && shared_->triangles) {
+    relocalizer_ = std::make_unique<GlobalRelocalizer>(map_, shared_->grid, *shared_->triangles,
+                                                       config_.matcher.relocalization, config_.matcher.sensor,
+                                                       config_.matcher.min_matches, &shared_->occluders);
   }
 }
 
@@ -56,7 +73,7 @@ void PosePredictor::add_beams(int map_index, double range, double bearing) {
 
 PosePrediction PosePredictor::predict(const Pose2& map_T_robot) {
   const Pose2 map_T_laser = map_T_robot * config_.robot_T_laser;
-  predict_reflectors(map_, grid_, map_T_laser, config_.matcher.sensor, 0.0, scratch_, predicted_);
+  predict_reflectors(map_, shared_->grid, map_T_laser, config_.matcher.sensor, 0.0, scratch_, predicted_);
   visible_.clear();
   beams_.clear();
   detections_.clear();
@@ -65,7 +82,8 @@ PosePrediction PosePredictor::predict(const Pose2& map_T_robot) {
     if (!p.in_view || is_shadowed(map_, predicted_, k)) continue;
     const MapReflector& reflector = map_.reflectors[static_cast<size_t>(p.map_index)];
     // A partly hidden reflector may show enough bright beams: the traced beams decide.
-    if (line_of_sight(occluders_, map_T_laser.translation(), reflector) == LineOfSight::kBlocked) continue;
+    if (line_of_sight(shared_->occluders, map_T_laser.translation(), reflector) == LineOfSight::kBlocked)
+      continue;
     // Fewer bright beams than the extractor needs: no detection, and no beams in the bound.
     if (p.range <= reflector.radius ||
         bright_beams_.count(map_T_laser, p.map_index) < config_.extractor.min_beams) {

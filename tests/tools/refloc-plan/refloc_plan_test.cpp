@@ -19,8 +19,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 namespace refloc {
 namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
@@ -76,7 +78,7 @@ TEST(PosePredictor, AReflectorWithFewerBrightBeamsThanTheExtractorNeedsIsNotSeen
 
 TEST(BrightBeamCounter, FarReflectorsShowFewerBrightBeamsThanBeamsAcrossThem) {
   const ReflectorMap map = map_of({{2, 0}, {6, 0.3}, {9, 0}});
-  const BrightBeamCounter counter(map, laser_at_centre());
+  BrightBeamCounter counter(map, laser_at_centre());
   EXPECT_GE(counter.count(Pose2{0, 0, 0}, 0), 5);  // 6.9 beam axes at 2 m
   EXPECT_LE(counter.count(Pose2{0, 0, 0}, 1), 2);  // 2.3 axes at 6 m
   EXPECT_LE(counter.count(Pose2{0, 0, 0}, 2), 1);  // 1.5 axes at 9 m
@@ -91,6 +93,40 @@ TEST(BrightBeamCounter, AReflectorCutByANearerCornerIsRejectedAsTheExtractorDoes
   EXPECT_EQ(BrightBeamCounter(map, config).count(Pose2{0, 0, 0}, 0), 0);
   config.extractor.reject_occluded = false;
   EXPECT_GE(BrightBeamCounter(map, config).count(Pose2{0, 0, 0}, 0), 2);
+}
+
+TEST(BrightBeamCounter, TheCandidateIndexCountsAsTestingEveryReflector) {
+  // 400 reflectors at random in a 40 m x 40 m hall with two racks, poses at random: every
+  // reflector in reach counted with the per-pose candidate index and with every beam tested
+  // against the whole map (as before the index).
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> coordinate(0.2, 39.8), heading(-M_PI, M_PI);
+  std::vector<Eigen::Vector2d> points;
+  while (points.size() < 400) {
+    const Eigen::Vector2d p(coordinate(rng), coordinate(rng));
+    if (std::none_of(points.begin(), points.end(),
+                     [&](const Eigen::Vector2d& q) { return (p - q).norm() < 0.5; }))
+      points.push_back(p);
+  }
+  ReflectorMap map = map_of(points);
+  map.occluders.push_back({"hall", {{0, 0}, {40, 0}, {40, 40}, {0, 40}}, true});
+  map.occluders.push_back({"rack", {{10, 10}, {18, 10}, {18, 11.5}, {10, 11.5}}, true});
+  map.occluders.push_back({"wall", {{25, 20}, {25, 32}}, false});
+  const PlanConfig config = laser_at_centre();
+  BrightBeamCounter indexed(map, config), brute(map, config, true);
+  int counted = 0, seen = 0;
+  for (int k = 0; k < 12; ++k) {
+    const Pose2 pose{coordinate(rng), coordinate(rng), heading(rng)};
+    for (size_t i = 0; i < map.reflectors.size(); ++i) {
+      if ((map.reflectors[i].map_p_center - pose.translation()).norm() > 12.0) continue;
+      const int n = indexed.count(pose, static_cast<int>(i));
+      ASSERT_EQ(n, brute.count(pose, static_cast<int>(i))) << "pose " << k << " reflector " << i;
+      ++counted;
+      seen += n >= 2;
+    }
+  }
+  EXPECT_GT(counted, 500);  // the poses had plenty to count
+  EXPECT_GT(seen, 50);
 }
 
 TEST(PosePredictor, ThreeReflectorsOnALineRelocalizeButTheSolverMakesNoPose) {
@@ -179,6 +215,42 @@ TEST(LayoutPlan, ABareCornerIsBlindAndTheSummaryCountsIt) {
   EXPECT_DOUBLE_EQ(plan.summary.blind, 14.0 / 36.0);
   EXPECT_GE(plan.summary.bad, plan.summary.blind);
   EXPECT_DOUBLE_EQ(plan.summary.area_m2, 36.0);
+}
+
+TEST(LayoutPlan, TheSamePlanOnAnyNumberOfThreads) {
+  const ReflectorMap map = symmetric_room();
+  PlanConfig config;
+  config.resolution = 0.5;
+  config.headings = 4;
+  const PlanGrid grid = make_plan_grid(map, {}, config.resolution);
+  const LayoutPlan one = plan_layout(map, grid, config);
+  config.threads = 3;
+  size_t calls = 0, last = 0;
+  const LayoutPlan three = plan_layout(map, grid, config, [&](size_t done, size_t all) {
+    ++calls;
+    EXPECT_EQ(done, last + 1);  // in order, from one thread at a time
+    EXPECT_EQ(all, grid.map_p_cells.size());
+    last = done;
+  });
+  EXPECT_EQ(calls, grid.map_p_cells.size());
+  ASSERT_EQ(one.cells.size(), three.cells.size());
+  int ambiguous = 0;
+  for (size_t c = 0; c < one.cells.size(); ++c) {
+    const CellPlan &a = one.cells[c], &b = three.cells[c];
+    EXPECT_EQ(a.map_p, b.map_p);
+    EXPECT_EQ(a.visible_min, b.visible_min);
+    EXPECT_EQ(a.visible_mean, b.visible_mean);
+    EXPECT_EQ(a.headings_ambiguous, b.headings_ambiguous);
+    EXPECT_EQ(a.headings_lost, b.headings_lost);
+    EXPECT_EQ(a.headings_unique, b.headings_unique);
+    EXPECT_EQ(a.headings_bad, b.headings_bad);
+    EXPECT_EQ(a.sigma_xy_max, b.sigma_xy_max);
+    EXPECT_EQ(a.sigma_theta_max, b.sigma_theta_max);
+    EXPECT_EQ(a.has_rival, b.has_rival);
+    EXPECT_EQ(a.map_T_robot_rival.x, b.map_T_robot_rival.x);
+    ambiguous += a.headings_ambiguous > 0;
+  }
+  EXPECT_GT(ambiguous, 0);  // the rival search ran in the threads too
 }
 
 TEST(PlacementSuggestions, CandidatesLieInsideTheHallOffTheWall) {
