@@ -155,15 +155,29 @@ void MapEvidence::add_unmapped(const Eigen::Vector2d& map_p, const Eigen::Vector
 }
 
 bool MapEvidence::is_candidate(const Cluster& c) const {
-  if (c.points.n < config_.candidate_min_sightings ||
-      c.viewpoint_spread < config_.candidate_min_viewpoint_spread ||
-      c.view_angle_high - c.view_angle_low < config_.candidate_min_view_angle)
+  if (!is_moved_place(c) || c.view_angle_high - c.view_angle_low < config_.candidate_min_view_angle)
     return false;
   // The robust spread of the last 64 sightings: a handful of strays (a scan placed with a pose a
   // few centimetres off while turning) inflated the plain standard deviation of an added wall
   // reflector to > 2 cm while its centre was right within 1 mm, and it was never proposed.
-  const double scatter = c.recent_points.robust_sigma();
-  return scatter <= config_.candidate_max_scatter && scatter < major_sigma(c.fronts.covariance());
+  return c.recent_points.robust_sigma() < major_sigma(c.fronts.covariance());
+}
+
+bool MapEvidence::is_moved_place(const Cluster& c) const {
+  return c.points.n >= config_.candidate_min_sightings &&
+         c.viewpoint_spread >= config_.candidate_min_viewpoint_spread &&
+         c.view_angle_high - c.view_angle_low >= config_.moved_min_view_angle &&
+         c.recent_points.robust_sigma() <= config_.candidate_max_scatter;
+}
+
+MapCandidate MapEvidence::candidate_of(const Cluster& c) const {
+  MapCandidate m;
+  m.map_p = c.points.mean();
+  m.sigma = axis_sigmas(mean_covariance(c.points.covariance(), c.points.n, config_.offset_sigma_floor));
+  m.sightings = c.points.n;
+  m.viewpoint_spread = c.viewpoint_spread;
+  m.key = c.key;
+  return m;
 }
 
 ReflectorHealthEntry MapEvidence::entry(size_t index) const {
@@ -204,8 +218,13 @@ ReflectorHealthEntry MapEvidence::entry(size_t index) const {
 
 // A moved reflector's new place claims the candidate there; a missing reflector (or one unseen
 // more often than seen, not yet judged) with a candidate near its mapped place moved there: a
-// short move is sometimes matched with its offset and sometimes not.
-void MapEvidence::attach_candidates(MapHealthReport& out) const {
+// short move is sometimes matched with its offset and sometimes not. Failing a candidate, a
+// missing reflector takes a moved place near it: driving straight at a reflector moved along its
+// wall took ~10 s to see its new place from the 20 degrees the face test needs, and a bright
+// spot that appears beside a reflector that vanished is that reflector more likely than not.
+void MapEvidence::attach_candidates(MapHealthReport& out,
+                                    const std::vector<MapCandidate>& moved_places) const {
+  std::vector<bool> place_taken(moved_places.size(), false);
   for (ReflectorHealthEntry& r : out.reflectors) {
     const bool missing = r.state == ReflectorHealth::kMissing ||
                          (r.state == ReflectorHealth::kUnconfirmed && r.expected_missing > r.seen);
@@ -217,6 +236,17 @@ void MapEvidence::attach_candidates(MapHealthReport& out) const {
     for (MapCandidate& c : out.candidates) {
       const double d = ((missing ? r.map_p : where) - c.map_p).norm();
       if (c.moved_reflector_id < 0 && d <= radius && d < best) best = d, nearest = &c;
+    }
+    if (nearest == nullptr && r.state == ReflectorHealth::kMissing) {
+      size_t nearest_place = moved_places.size();
+      for (size_t i = 0; i < moved_places.size(); ++i) {
+        const double d = (r.map_p - moved_places[i].map_p).norm();
+        if (!place_taken[i] && d <= radius && d < best) best = d, nearest_place = i;
+      }
+      if (nearest_place < moved_places.size()) {
+        place_taken[nearest_place] = true;
+        nearest = &out.candidates.emplace_back(moved_places[nearest_place]);
+      }
     }
     if (nearest == nullptr) continue;
     nearest->moved_reflector_id = r.id;
@@ -236,17 +266,15 @@ void MapEvidence::report(int64_t utime, MapHealthReport& out) const {
   out.reflectors.clear();
   for (size_t i = 0; i < tracks_.size(); ++i) out.reflectors.push_back(entry(i));
   out.candidates.clear();
+  std::vector<MapCandidate> moved_places;
   for (const Cluster& c : clusters_) {
-    if (!is_candidate(c)) continue;
-    MapCandidate m;
-    m.map_p = c.points.mean();
-    m.sigma = axis_sigmas(mean_covariance(c.points.covariance(), c.points.n, config_.offset_sigma_floor));
-    m.sightings = c.points.n;
-    m.viewpoint_spread = c.viewpoint_spread;
-    m.key = c.key;
-    out.candidates.push_back(m);
+    if (is_candidate(c)) {
+      out.candidates.push_back(candidate_of(c));
+    } else if (is_moved_place(c)) {
+      moved_places.push_back(candidate_of(c));
+    }
   }
-  attach_candidates(out);
+  attach_candidates(out, moved_places);
 }
 
 }  // namespace refloc

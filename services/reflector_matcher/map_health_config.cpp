@@ -111,6 +111,14 @@ void parse_candidates(const JsonConfig& c, MapHealthConfig& m) {
                                        "a missing reflector with a candidate within this of its mapped place "
                                        "is reported moved there (not missing + new)"},
                                       m.moved_candidate_radius, 0.0, 100.0);
+  m.moved_min_view_angle =
+      c.number(
+          {"/map_health/moved_min_view_angle_deg", "deg",
+           "a cluster within moved_candidate_radius_m of a missing reflector is its new place once it "
+           "has the candidate's sightings, viewpoint spread and scatter and was seen from directions this "
+           "far apart; the face test is not made (it needs candidate_min_view_angle_deg)"},
+          m.moved_min_view_angle * 180.0 / M_PI, 0.0, 180.0) *
+      M_PI / 180.0;
 }
 
 }  // namespace

@@ -59,6 +59,10 @@ struct MapHealthConfig {
   int max_clusters = 256;  ///< unmapped clusters kept; the stalest goes first [count]
   double moved_candidate_radius =
       1.0;  ///< _m: a missing reflector with a candidate this near moved there [m]
+  /// moved_min_view_angle_deg: a cluster near a missing reflector is its new place when seen
+  /// from directions this far apart (the other candidate rules hold, the face test is not made):
+  /// driving straight at a moved reflector turns the view by a few degrees in 10 s [rad].
+  double moved_min_view_angle = 0.0;
 };
 
 /// Reads and validates "/map_health/..." of the matcher's file.

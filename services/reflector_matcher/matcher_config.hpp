@@ -39,6 +39,11 @@ struct TrackingConfig {
   /// missed_penalty): three wrong pairs near a wrong prior leave the reflectors really in view
   /// unexplained or "missing" [-].
   double min_score = 2.0;
+  /// bare_overrule_confirm_scans: when tracking from a prior fails and the map-wide search finds
+  /// an OK pose elsewhere on the bare minimum of pairs, that pose is a fix only once another scan
+  /// within this many gives the same pose (until then AMBIGUOUS). A triangle that fits the map at
+  /// a second place fools one scan; a kidnapped robot sees its new place in every scan. 0: off [count].
+  int bare_overrule_confirm_scans = 5;
 };
 
 /// "relocalization": global relocalization and the verification of a hypothesis.

@@ -115,6 +115,12 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
       {"/tracking/min_score", "",
        "the same when the tracked pose's verification score (matched - penalties) is below this"},
       m.tracking.min_score, -1000.0, 1000.0);
+  m.tracking.bare_overrule_confirm_scans = static_cast<int>(config.integer(
+      {"/tracking/bare_overrule_confirm_scans", "count",
+       "when tracking from a prior fails and relocalization finds a pose elsewhere on the bare minimum of "
+       "pairs, another scan within this many must find the same pose before it is a fix (AMBIGUOUS until "
+       "then); 0: off"},
+      m.tracking.bare_overrule_confirm_scans, 0, 1000));
 
   m.relocalization.side_tolerance = config.number({"/relocalization/side_tolerance_m", "m",
                                                    "per sorted side when looking a detection triangle up in "

@@ -82,6 +82,13 @@ const MatcherOutput& MatcherNode::on_detections(int64_t utime, int64_t scan_coun
   const PriorChoice choice = selector_.select(utime);
   output_.prior_source = choice.source;
   matcher_.match(detections, choice.prior ? &*choice.prior : nullptr, output_.result);
+  if (matcher_.held_bare_overrule())
+    output_.events.push_back(
+        {"bare_overrules_held", NodeEvent::Level::kInfo,
+         fmt::format("tracking from the prior failed and the map fits ({:.2f}, {:.2f}) m on only {} pairs: "
+                     "AMBIGUOUS until another scan finds the same pose",
+                     output_.result.map_T_laser.x, output_.result.map_T_laser.y,
+                     matcher_.config().min_matches)});
   output_.startup_event = selector_.on_result(utime, output_.result);
   switch (selector_.take_initial_pose_event()) {
     case InitialPoseEvent::kConfirmed:

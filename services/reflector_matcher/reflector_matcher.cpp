@@ -35,8 +35,11 @@ void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, 
     paper_->match(detections, result);
     return;
   }
+  held_bare_overrule_ = false;
+  if (scans_since_overrule_ >= 0) ++scans_since_overrule_;
   if (prior == nullptr || !tracker_->associate(detections, *prior, result)) {
     relocalizer_->relocalize(detections, result);
+    if (prior != nullptr) confirm_bare_overrule(*prior, result);
     return;
   }
   const int unexplained = result.ndetections - static_cast<int>(result.matches.size());
@@ -75,6 +78,29 @@ void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, 
     return;
   }
   std::swap(tracked_, result);
+}
+
+void ReflectorMatcher::confirm_bare_overrule(const PosePrior& prior, MatchResult& result) {
+  const int window = config_.tracking.bare_overrule_confirm_scans;
+  const RelocalizationConfig& r = config_.relocalization;
+  if (window <= 0 || result.status != MatchStatus::kOk ||
+      static_cast<int>(result.matches.size()) > config_.min_matches ||
+      approx_equal(result.map_T_laser, prior.map_T_laser, r.distinct_pose_distance, r.distinct_pose_angle))
+    return;
+  // Measured in the demo hall with reflectors moved (reflector_matcher README): one scan whose
+  // tracking failed relocalized OK on three pairs 15 m from a correct prior.
+  if (scans_since_overrule_ >= 0 && scans_since_overrule_ <= window &&
+      approx_equal(result.map_T_laser, unconfirmed_overrule_, r.distinct_pose_distance,
+                   r.distinct_pose_angle)) {
+    scans_since_overrule_ = -1;
+    return;
+  }
+  unconfirmed_overrule_ = result.map_T_laser;
+  scans_since_overrule_ = 0;
+  held_bare_overrule_ = true;
+  result.status = MatchStatus::kAmbiguous;
+  result.runner_up_map_T_laser = prior.map_T_laser;
+  result.matches.clear();
 }
 
 }  // namespace refloc

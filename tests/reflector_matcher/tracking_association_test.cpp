@@ -56,6 +56,48 @@ TEST(TrackingAssociation, FallsBackToGlobalWhenThePriorIsFarOff) {
   EXPECT_TRUE(approx_equal(result.map_T_laser, truth, 0.05, 0.01));
 }
 
+// Three reflectors, a confident prior 8 m away: tracking fails and the map fits the scan
+// elsewhere on the bare minimum of pairs. One such scan is held back (AMBIGUOUS); the next scan
+// that finds the same pose within the window is the fix; after the window it is held again.
+TEST(TrackingAssociation, OverruleOfAPriorOnThreePairsIsAFixOnlyWhenTheNextScanRepeatsIt) {
+  std::mt19937 rng(14);
+  const ReflectorMap map = testing::map_from_points({{2.0, 0.0}, {5.5, 1.0}, {3.0, 4.0}});
+  const Pose2 truth{3.5, 1.5, -0.35};
+  testing::SyntheticSensor sensor;
+  sensor.range_sigma = 0.002;
+  const auto scan = testing::render_detections(map, truth, sensor, rng);
+  ASSERT_EQ(scan.detections.size(), 3u);
+  PosePrior prior;
+  prior.map_T_laser = Pose2{11.5, 1.5, -0.35};
+  prior.covariance = Eigen::Matrix3d::Identity() * 1e-4;
+  MatcherConfig config;
+  ReflectorMatcher matcher(map, config);
+  MatchResult result;
+  matcher.match(scan.detections, &prior, result);
+  EXPECT_EQ(result.status, MatchStatus::kAmbiguous);
+  EXPECT_TRUE(result.matches.empty());
+  EXPECT_TRUE(matcher.held_bare_overrule());
+  matcher.match(scan.detections, &prior, result);
+  EXPECT_EQ(result.status, MatchStatus::kOk);
+  EXPECT_FALSE(matcher.held_bare_overrule());
+  EXPECT_TRUE(testing::all_matches_correct(result, scan, map));
+  EXPECT_TRUE(approx_equal(result.map_T_laser, truth, 0.05, 0.02));
+
+  matcher.match(scan.detections, &prior, result);  // confirmed once: a new overrule is held again
+  EXPECT_EQ(result.status, MatchStatus::kAmbiguous);
+  for (int k = 0; k < config.tracking.bare_overrule_confirm_scans; ++k) matcher.match({}, &prior, result);
+  matcher.match(scan.detections, &prior, result);  // beyond the window
+  EXPECT_EQ(result.status, MatchStatus::kAmbiguous);
+
+  config.tracking.bare_overrule_confirm_scans = 0;
+  ReflectorMatcher unchecked(map, config);
+  unchecked.match(scan.detections, &prior, result);
+  EXPECT_EQ(result.status, MatchStatus::kOk);
+  ReflectorMatcher without_prior(map, MatcherConfig{});
+  without_prior.match(scan.detections, nullptr, result);
+  EXPECT_EQ(result.status, MatchStatus::kOk);
+}
+
 TEST(TrackingAssociation, IgnoresASpuriousDetectionFarFromEveryReflector) {
   std::mt19937 rng(13);
   const ReflectorMap map = testing::random_map(20, 40, 40, 1.0, rng);
