@@ -24,7 +24,7 @@ struct FusionServiceConfig {
   FusionMeasurements measurements = FusionMeasurements::kDetections;
   /// Share of robot.json's odometry variance the filter treats as random while it
   /// estimates the odometry's calibration error (the rest is that error).
-  double odometry_random_noise_fraction = 0.05;
+  double odometry_random_noise_fraction = 0.025;
   /// When consecutive ODOMETRY messages are not one continuous frame.
   OdometryContinuityConfig continuity;
   /// No ODOMETRY this long: fixes are published as DEGRADED POSE (OdometrySilence) [s].
