@@ -126,7 +126,8 @@ void MapEvidence::add_unmapped(const Eigen::Vector2d& map_p, const Eigen::Vector
       auto stalest = [&](bool spare_candidates) {
         Cluster* s = nullptr;
         for (Cluster& c : clusters_) {
-          if ((!spare_candidates || !is_candidate(c)) && (s == nullptr || c.last_utime < s->last_utime))
+          if ((!spare_candidates || standing(c) != ClusterStanding::kCandidate) &&
+              (s == nullptr || c.last_utime < s->last_utime))
             s = &c;
         }
         return s;
@@ -154,20 +155,19 @@ void MapEvidence::add_unmapped(const Eigen::Vector2d& map_p, const Eigen::Vector
   c.last_utime = utime;
 }
 
-bool MapEvidence::is_candidate(const Cluster& c) const {
-  if (!is_moved_place(c) || c.view_angle_high - c.view_angle_low < config_.candidate_min_view_angle)
-    return false;
+MapEvidence::ClusterStanding MapEvidence::standing(const Cluster& c) const {
+  if (c.points.n < config_.candidate_min_sightings ||
+      c.viewpoint_spread < config_.candidate_min_viewpoint_spread)
+    return ClusterStanding::kNone;
   // The robust spread of the last 64 sightings: a handful of strays (a scan placed with a pose a
   // few centimetres off while turning) inflated the plain standard deviation of an added wall
   // reflector to > 2 cm while its centre was right within 1 mm, and it was never proposed.
-  return c.recent_points.robust_sigma() < major_sigma(c.fronts.covariance());
-}
-
-bool MapEvidence::is_moved_place(const Cluster& c) const {
-  return c.points.n >= config_.candidate_min_sightings &&
-         c.viewpoint_spread >= config_.candidate_min_viewpoint_spread &&
-         c.view_angle_high - c.view_angle_low >= config_.moved_min_view_angle &&
-         c.recent_points.robust_sigma() <= config_.candidate_max_scatter;
+  const double scatter = c.recent_points.robust_sigma();
+  if (scatter > config_.candidate_max_scatter) return ClusterStanding::kNone;
+  const double view_span = c.view_angle_high - c.view_angle_low;
+  if (view_span >= config_.candidate_min_view_angle && scatter < major_sigma(c.fronts.covariance()))
+    return ClusterStanding::kCandidate;
+  return view_span >= config_.moved_min_view_angle ? ClusterStanding::kMovedPlace : ClusterStanding::kNone;
 }
 
 MapCandidate MapEvidence::candidate_of(const Cluster& c) const {
@@ -268,10 +268,15 @@ void MapEvidence::report(int64_t utime, MapHealthReport& out) const {
   out.candidates.clear();
   std::vector<MapCandidate> moved_places;
   for (const Cluster& c : clusters_) {
-    if (is_candidate(c)) {
-      out.candidates.push_back(candidate_of(c));
-    } else if (is_moved_place(c)) {
-      moved_places.push_back(candidate_of(c));
+    switch (standing(c)) {
+      case ClusterStanding::kCandidate:
+        out.candidates.push_back(candidate_of(c));
+        break;
+      case ClusterStanding::kMovedPlace:
+        moved_places.push_back(candidate_of(c));
+        break;
+      case ClusterStanding::kNone:
+        break;
     }
   }
   attach_candidates(out, moved_places);

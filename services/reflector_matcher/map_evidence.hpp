@@ -100,13 +100,14 @@ class MapEvidence {
   void push_expectation(ReflectorTrack& t, bool seen) const;
   void push_offset(ReflectorTrack& t, const Eigen::Vector2d& offset) const;
   void add_unmapped(const Eigen::Vector2d& map_p, const Eigen::Vector2d& map_p_laser, int64_t utime);
-  bool is_candidate(const Cluster& c) const;
-  /// The candidate rules without the face test and with moved_min_view_angle: good enough for
-  /// the new place of a reflector that went missing near it.
-  bool is_moved_place(const Cluster& c) const;
+  /// kCandidate: sightings, viewpoint spread, scatter, view span and the face test all pass;
+  /// kMovedPlace: all but the view span and face test, seen over moved_min_view_angle: good enough
+  /// for the new place of a reflector that went missing near it (never reported alone).
+  enum class ClusterStanding { kNone, kMovedPlace, kCandidate };
+  ClusterStanding standing(const Cluster& c) const;
   MapCandidate candidate_of(const Cluster& c) const;
   ReflectorHealthEntry entry(size_t index) const;
-  /// moved_places: clusters that are no candidate but is_moved_place, claimed only by a missing
+  /// moved_places: the clusters of standing kMovedPlace, claimed only by a missing
   /// reflector near them (then reported as candidates).
   void attach_candidates(MapHealthReport& out, const std::vector<MapCandidate>& moved_places) const;
 

@@ -35,7 +35,6 @@ void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, 
     paper_->match(detections, result);
     return;
   }
-  held_bare_overrule_ = false;
   if (scans_since_overrule_ >= 0) ++scans_since_overrule_;
   if (prior == nullptr || !tracker_->associate(detections, *prior, result)) {
     relocalizer_->relocalize(detections, result);
@@ -97,7 +96,6 @@ void ReflectorMatcher::confirm_bare_overrule(const PosePrior& prior, MatchResult
   }
   unconfirmed_overrule_ = result.map_T_laser;
   scans_since_overrule_ = 0;
-  held_bare_overrule_ = true;
   result.status = MatchStatus::kAmbiguous;
   result.runner_up_map_T_laser = prior.map_T_laser;
   result.matches.clear();

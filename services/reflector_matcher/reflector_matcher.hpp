@@ -38,7 +38,7 @@ class ReflectorMatcher {
   size_t indexed_triangles() const;
   /// The last match() held a global OK elsewhere than the prior back as AMBIGUOUS until another
   /// scan confirms it (tracking.bare_overrule_confirm_scans).
-  bool held_bare_overrule() const { return held_bare_overrule_; }
+  bool held_bare_overrule() const { return scans_since_overrule_ == 0; }
 
  private:
   ReflectorMap map_;
@@ -50,10 +50,10 @@ class ReflectorMatcher {
   std::unique_ptr<TrackingAssociator> tracker_;
   std::unique_ptr<PaperTriangleMatcher> paper_;
   MatchResult tracked_;  ///< a doubtful tracking result while the global search runs
-  /// The last bare-minimum overrule of a prior not yet confirmed, and scans since it (-1: none).
+  /// The last bare-minimum overrule of a prior not yet confirmed, and scans since it (-1: none;
+  /// 0: held back in the last match()).
   Pose2 unconfirmed_overrule_;
   int scans_since_overrule_ = -1;
-  bool held_bare_overrule_ = false;
   /// A global OK that overrules prior on the bare minimum of pairs becomes AMBIGUOUS unless it
   /// repeats the unconfirmed one (tracking.bare_overrule_confirm_scans).
   void confirm_bare_overrule(const PosePrior& prior, MatchResult& result);
