@@ -115,6 +115,7 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   result.ndetections = static_cast<int>(detections.size());
   scored_.clear();
   best_associations_.clear();
+  rivals_.clear();
   if (static_cast<int>(detections.size()) < min_matches_) return;
 
   generate_hypotheses(detections);
@@ -138,7 +139,6 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   // explains as many detections and loses only on a few unseen reflectors: unmapped racks
   // and people hide reflectors, so "not seen" is weak evidence.
   double runner_up = -1e300;
-  bool rival = false;
   for (const Scored& s : scored_) {
     if (approx_equal(s.map_T_laser, best_pose, relocalization_.distinct_pose_distance,
                      relocalization_.distinct_pose_angle))
@@ -148,24 +148,46 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
       result.runner_up_map_T_laser = s.map_T_laser;
     }
     const double margin = best_score - s.score;
-    rival = rival || margin < (1.0 - relocalization_.ambiguity_ratio) * best_matched ||
-            (s.matched >= best_matched && margin < relocalization_.ambiguity_missed_margin);
+    if (margin < (1.0 - relocalization_.ambiguity_ratio) * best_matched ||
+        (s.matched >= best_matched && margin < relocalization_.ambiguity_missed_margin))
+      rivals_.push_back(s.map_T_laser);
   }
   result.map_T_laser = best_pose;
   result.hypothesis_score = best_score;
   result.runner_up_score = scored_.size() > 1 && runner_up > -1e300 ? runner_up : 0.0;
+  if (!explains_enough(best_matched, best_score, detections.size())) return;
+  fill_matches(result);
+  result.status = rivals_.empty() ? MatchStatus::kOk : MatchStatus::kAmbiguous;
+}
+
+bool GlobalRelocalizer::explains_enough(int matched, double score, size_t ndetections) const {
   // Most detections of a real scan are reflectors: a pose that explains few of them is a
   // chance alignment (or the map has changed), not a fix.
-  if (best_matched < min_matches_ ||
-      best_matched < relocalization_.min_explained_fraction * static_cast<double>(detections.size()) ||
-      best_score < relocalization_.min_score) {
-    return;
-  }
+  return matched >= min_matches_ &&
+         matched >= relocalization_.min_explained_fraction * static_cast<double>(ndetections) &&
+         score >= relocalization_.min_score;
+}
+
+void GlobalRelocalizer::fill_matches(MatchResult& result) const {
+  result.matches.clear();
   for (const Association& a : best_associations_) {
     const MapReflector& r = map_.reflectors[static_cast<size_t>(a.map_index)];
     result.matches.push_back({a.detection_index, r.id, r.map_p_center, r.radius});
   }
-  result.status = rival ? MatchStatus::kAmbiguous : MatchStatus::kOk;
+}
+
+bool GlobalRelocalizer::adopt_rival(const Pose2& rival, const std::vector<ReflectorDetection>& detections,
+                                    MatchResult& result) {
+  const Verification v = verifier_.verify(rival, detections);
+  if (!explains_enough(v.matched, v.score, detections.size())) return false;
+  best_associations_ = verifier_.associations();
+  result.runner_up_map_T_laser = result.map_T_laser;
+  result.runner_up_score = result.hypothesis_score;
+  result.map_T_laser = v.map_T_laser;
+  result.hypothesis_score = v.score;
+  fill_matches(result);
+  result.status = MatchStatus::kOk;
+  return true;
 }
 
 }  // namespace refloc

@@ -32,6 +32,14 @@ class GlobalRelocalizer {
 
   /// Hypotheses verified by the last call (for tests and benchmarks).
   size_t hypotheses_verified() const { return scored_.size(); }
+  /// Poses of the last call that rivalled its best (the call was AMBIGUOUS when it had matches
+  /// and this is not empty).
+  const std::vector<Pose2>& rivals() const { return rivals_; }
+  /// Makes result (of the last relocalize()) the given rival's, verified again, status OK; false
+  /// (result unchanged) when the rival explains too little of the scan. For a caller with
+  /// evidence the search lacks (a prior that admits this rival alone).
+  bool adopt_rival(const Pose2& rival, const std::vector<ReflectorDetection>& detections,
+                   MatchResult& result);
 
  private:
   struct Scored {
@@ -41,6 +49,8 @@ class GlobalRelocalizer {
   };
   void generate_hypotheses(const std::vector<ReflectorDetection>& detections);
   void remove_duplicate_hypotheses();
+  bool explains_enough(int matched, double score, size_t ndetections) const;
+  void fill_matches(MatchResult& result) const;  ///< from best_associations_
 
   const ReflectorMap& map_;
   RelocalizationConfig relocalization_;
@@ -53,6 +63,7 @@ class GlobalRelocalizer {
   std::vector<std::pair<uint64_t, size_t>> keyed_;
   std::vector<Scored> scored_;
   std::vector<Association> best_associations_;
+  std::vector<Pose2> rivals_;
 };
 
 }  // namespace refloc

@@ -82,6 +82,13 @@ const MatcherOutput& MatcherNode::on_detections(int64_t utime, int64_t scan_coun
   const PriorChoice choice = selector_.select(utime);
   output_.prior_source = choice.source;
   matcher_.match(detections, choice.prior ? &*choice.prior : nullptr, output_.result);
+  output_.tracking_association_failed = matcher_.tracking_association_failed();
+  if (matcher_.prior_settled_ambiguity())
+    output_.events.push_back(
+        {"ambiguities_settled_by_prior", NodeEvent::Level::kInfo,
+         fmt::format("tracking from the prior failed and the map-wide search was AMBIGUOUS; the prior "
+                     "admits only its best pose ({:.2f}, {:.2f}) m: OK",
+                     output_.result.map_T_laser.x, output_.result.map_T_laser.y)});
   if (matcher_.held_bare_overrule())
     output_.events.push_back(
         {"bare_overrules_held", NodeEvent::Level::kInfo,

@@ -31,6 +31,7 @@ struct MatcherOutput {
   int64_t utime = 0;  ///< the scan's [us]
   MatchResult result;
   PriorSource prior_source = PriorSource::kNone;
+  bool tracking_association_failed = false;  ///< ReflectorMatcher::tracking_association_failed()
   StartupEvent startup_event = StartupEvent::kNone;
 
   /// Calls bump(name, increment) for each heartbeat counter this scan touches.
@@ -40,7 +41,8 @@ struct MatcherOutput {
     if (missing_scans >= 0) bump("gap_detections_messages", missing_scans);
     const bool had_prior = prior_source == PriorSource::kFusedPose || prior_source == PriorSource::kOwnPose;
     if (prior_source == PriorSource::kStartupWindow) bump("startup_scans_without_prior", 1);
-    if (had_prior && result.mode == MatchMode::kGlobal) bump("tracking_failures", 1);
+    if (had_prior && (result.mode == MatchMode::kGlobal || tracking_association_failed))
+      bump("tracking_failures", 1);
     if (result.mode == MatchMode::kGlobal) bump("global_relocalizations", 1);
     if (result.status == MatchStatus::kLost) bump("lost_scans", 1);
     if (result.status == MatchStatus::kAmbiguous) bump("ambiguous_scans", 1);

@@ -1,8 +1,23 @@
 #include "reflector_matcher/reflector_matcher.hpp"
 
+#include "common/angles.hpp"
 #include "common/se2.hpp"
 
+#include <Eigen/Cholesky>
+
 namespace refloc {
+namespace {
+
+/// chi-square, 3 degrees of freedom, 99.9 %: the prior's region in (x, y, theta).
+constexpr double kPriorGateChi2 = 16.27;
+
+bool inside_prior_gate(const Pose2& map_T_laser, const PosePrior& prior, const Eigen::Matrix3d& covariance) {
+  const Eigen::Vector3d e(map_T_laser.x - prior.map_T_laser.x, map_T_laser.y - prior.map_T_laser.y,
+                          wrap_angle(map_T_laser.theta - prior.map_T_laser.theta));
+  return e.dot(covariance.ldlt().solve(e)) <= kPriorGateChi2;
+}
+
+}  // namespace
 
 ReflectorMatcher::ReflectorMatcher(ReflectorMap map, const MatcherConfig& config)
     : map_(std::move(map)),
@@ -36,9 +51,14 @@ void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, 
     return;
   }
   if (scans_since_overrule_ >= 0) ++scans_since_overrule_;
+  prior_settled_ambiguity_ = false;
+  tracking_association_failed_ = false;
   if (prior == nullptr || !tracker_->associate(detections, *prior, result)) {
     relocalizer_->relocalize(detections, result);
-    if (prior != nullptr) confirm_bare_overrule(*prior, result);
+    if (prior == nullptr) return;
+    tracking_association_failed_ = true;
+    decide_with_prior(*prior, detections, result);
+    if (result.mode == MatchMode::kGlobal) confirm_bare_overrule(*prior, result);
     return;
   }
   const int unexplained = result.ndetections - static_cast<int>(result.matches.size());
@@ -77,6 +97,35 @@ void ReflectorMatcher::match(const std::vector<ReflectorDetection>& detections, 
     return;
   }
   std::swap(tracked_, result);
+}
+
+void ReflectorMatcher::decide_with_prior(const PosePrior& prior,
+                                         const std::vector<ReflectorDetection>& detections,
+                                         MatchResult& result) {
+  // Tracking from a wide prior (a user's INITIAL_POSE, 0.2 m / 5 deg) can fail where a
+  // distractor sits beside a reflector; the map-wide search then knows nothing of the prior and
+  // may be AMBIGUOUS between the true pose and one metres away, scan after scan (web_console's
+  // browser test, once in CI). The prior is independent evidence: it settles the choice when it
+  // admits exactly one of the hypotheses, the best or a rival.
+  if (result.matches.empty()) return;
+  const Eigen::Matrix3d covariance = floored_prior_covariance(prior, config_.tracking);
+  const bool best_inside = inside_prior_gate(result.map_T_laser, prior, covariance);
+  if (result.status == MatchStatus::kOk) {
+    if (best_inside) result.mode = MatchMode::kTracking;  // the map-wide search confirms the prior
+    return;
+  }
+  const Pose2* admitted_rival = nullptr;
+  for (const Pose2& rival : relocalizer_->rivals()) {
+    if (!inside_prior_gate(rival, prior, covariance)) continue;
+    if (best_inside || admitted_rival != nullptr) return;  // the prior admits two: still ambiguous
+    admitted_rival = &rival;
+  }
+  if (!best_inside &&
+      (admitted_rival == nullptr || !relocalizer_->adopt_rival(*admitted_rival, detections, result)))
+    return;
+  result.status = MatchStatus::kOk;
+  result.mode = MatchMode::kTracking;
+  prior_settled_ambiguity_ = true;
 }
 
 void ReflectorMatcher::confirm_bare_overrule(const PosePrior& prior, MatchResult& result) {

@@ -39,6 +39,12 @@ class ReflectorMatcher {
   /// The last match() held a global OK elsewhere than the prior back as AMBIGUOUS until another
   /// scan confirms it (tracking.bare_overrule_confirm_scans).
   bool held_bare_overrule() const { return scans_since_overrule_ == 0; }
+  /// The last match() was an AMBIGUOUS map-wide result that the prior settled: its best pose
+  /// or one of its rivals alone inside the prior's gate (reported OK, mode TRACKING).
+  bool prior_settled_ambiguity() const { return prior_settled_ambiguity_; }
+  /// The last match() had a prior and tracking found fewer than min_matches pairs from it (the
+  /// map-wide search answered, whatever mode the result reports).
+  bool tracking_association_failed() const { return tracking_association_failed_; }
 
  private:
   ReflectorMap map_;
@@ -57,6 +63,12 @@ class ReflectorMatcher {
   /// A global OK that overrules prior on the bare minimum of pairs becomes AMBIGUOUS unless it
   /// repeats the unconfirmed one (tracking.bare_overrule_confirm_scans).
   void confirm_bare_overrule(const PosePrior& prior, MatchResult& result);
+  bool prior_settled_ambiguity_ = false;
+  bool tracking_association_failed_ = false;
+  /// After tracking failed: a map-wide result inside the prior's gate is the prior confirmed
+  /// (mode TRACKING), and an AMBIGUOUS one is settled by it when it admits one hypothesis alone.
+  void decide_with_prior(const PosePrior& prior, const std::vector<ReflectorDetection>& detections,
+                         MatchResult& result);
 };
 
 }  // namespace refloc

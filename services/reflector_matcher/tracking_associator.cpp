@@ -10,6 +10,16 @@
 
 namespace refloc {
 
+Eigen::Matrix3d floored_prior_covariance(const PosePrior& prior, const TrackingConfig& tracking) {
+  Eigen::Matrix3d cov = prior.covariance;
+  const double min_var_xy = tracking.prior_min_sigma_xy * tracking.prior_min_sigma_xy;
+  const double min_var_theta = tracking.prior_min_sigma_theta * tracking.prior_min_sigma_theta;
+  cov(0, 0) = std::max(cov(0, 0), min_var_xy);
+  cov(1, 1) = std::max(cov(1, 1), min_var_xy);
+  cov(2, 2) = std::max(cov(2, 2), min_var_theta);
+  return cov;
+}
+
 TrackingAssociator::TrackingAssociator(const ReflectorMap& map, const MapGrid& grid,
                                        const TrackingConfig& tracking, const SensorVisibilityConfig& sensor,
                                        const RelocalizationConfig& relocalization, int min_matches,
@@ -32,12 +42,7 @@ bool TrackingAssociator::associate(const std::vector<ReflectorDetection>& detect
   result.map_T_laser = prior.map_T_laser;
   result.ndetections = static_cast<int>(detections.size());
 
-  Eigen::Matrix3d prior_cov = prior.covariance;
-  const double min_var_xy = tracking_.prior_min_sigma_xy * tracking_.prior_min_sigma_xy;
-  const double min_var_theta = tracking_.prior_min_sigma_theta * tracking_.prior_min_sigma_theta;
-  prior_cov(0, 0) = std::max(prior_cov(0, 0), min_var_xy);
-  prior_cov(1, 1) = std::max(prior_cov(1, 1), min_var_xy);
-  prior_cov(2, 2) = std::max(prior_cov(2, 2), min_var_theta);
+  const Eigen::Matrix3d prior_cov = floored_prior_covariance(prior, tracking_);
 
   // The prior's 3-sigma position error widens the search beyond the nominal view.
   const double margin = 3.0 * std::sqrt(std::max(prior_cov(0, 0), prior_cov(1, 1))) +

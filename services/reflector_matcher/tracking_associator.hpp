@@ -21,6 +21,10 @@
 
 namespace refloc {
 
+/// The prior's covariance with its standard deviations floored (tracking.prior_min_sigma_*): a
+/// prior claiming millimetres would gate out a reflector's real scatter.
+Eigen::Matrix3d floored_prior_covariance(const PosePrior& prior, const TrackingConfig& tracking);
+
 class TrackingAssociator {
  public:
   /// map, grid and occluders (null: none) must outlive the associator; relocalization's gates

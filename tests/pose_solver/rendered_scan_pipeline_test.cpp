@@ -153,5 +153,54 @@ TEST(RenderedScanPipeline, APriorMetresOffIsOverruledByTheMapNeverConfirmed) {
   EXPECT_EQ(t.wrong_trusting, 0);
 }
 
+/// A user's INITIAL_POSE dropped on the robot: the true pose with the console's wide covariance
+/// (0.2 m, 5 deg). Counts the scans the matcher confirms from it (OK, tracking) and the wrong OK.
+struct UserPoseTally {
+  int scans = 0, confirmed = 0, ok_global = 0, ambiguous = 0, wrong = 0;
+};
+
+UserPoseTally run_user_pose(int poses, unsigned seed) {
+  const std::string dir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config";
+  const sim::World world = sim::load_world(dir + "/world_demo.json");
+  const ReflectorMap map = load_reflector_map(world.map_file);
+  const Pose2 robot_T_laser = load_robot_config(dir + "/robot.json").robot_T_laser;
+  ReflectorExtractor extractor;
+  sim::ScanRenderer renderer;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> ux(0.5, 19.5), uy(0.5, 11.5), ua(-M_PI, M_PI);
+  LaserScan scan;
+  MatchResult match;
+  UserPoseTally t;
+  while (t.scans < poses) {
+    const Pose2 truth{ux(rng), uy(rng), ua(rng)};
+    if (!world.drivable_areas.empty() && !world.is_drivable(truth.translation())) continue;
+    ++t.scans;
+    // A fresh matcher per pose: the user's pose is the first prior it sees.
+    ReflectorMatcher matcher(map, MatcherConfig{});
+    const Pose2 map_T_laser = truth * robot_T_laser;
+    PosePrior prior;
+    prior.map_T_laser = map_T_laser;
+    const double sigma_theta = 5.0 * M_PI / 180.0;
+    prior.covariance = Eigen::Vector3d(0.2 * 0.2, 0.2 * 0.2, sigma_theta * sigma_theta).asDiagonal();
+    renderer.render(world, map_T_laser, 1'000'000 + t.scans * 20'000, rng, scan);
+    matcher.match(extractor.extract(scan), &prior, match);
+    if (match.status == MatchStatus::kAmbiguous) ++t.ambiguous;
+    if (match.status != MatchStatus::kOk) continue;
+    (match.mode == MatchMode::kTracking ? t.confirmed : t.ok_global) += 1;
+    t.wrong += !approx_equal(match.map_T_laser, map_T_laser, 0.2, 5.0 * M_PI / 180.0);
+  }
+  std::printf(
+      "user pose on the robot, %d scans: confirmed (OK tracking) %d, OK global %d, ambiguous %d, "
+      "wrong %d\n",
+      t.scans, t.confirmed, t.ok_global, t.ambiguous, t.wrong);
+  return t;
+}
+
+TEST(RenderedScanPipeline, AUserPoseOnTheRobotIsConfirmed) {
+  const UserPoseTally t = run_user_pose(500, 11);
+  EXPECT_EQ(t.wrong, 0);
+  EXPECT_EQ(t.ambiguous, 0);
+}
+
 }  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

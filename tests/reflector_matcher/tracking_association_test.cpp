@@ -118,5 +118,51 @@ TEST(TrackingAssociation, IgnoresASpuriousDetectionFarFromEveryReflector) {
     EXPECT_NE(m.detection_index, static_cast<int>(scan.detections.size()) - 1);
 }
 
+// A rectangle of reflectors looks the same from its centre facing either way, so the map-wide
+// search is AMBIGUOUS; two short walls hide two reflectors from a prior 0.3 m off (but not from
+// the truth), so tracking from it fails. The prior then settles the choice when it admits one of
+// the two poses alone, whichever the search ranked first.
+TEST(TrackingAssociation, APriorThatAdmitsOneOfTheAmbiguousPosesSettlesIt) {
+  std::mt19937 rng(15);
+  ReflectorMap map = testing::map_from_points({{0.0, 0.0}, {10.0, 0.0}, {0.0, 6.0}, {10.0, 6.0}});
+  map.occluders.push_back({"post west", {{4.0, 2.55}, {4.0, 2.75}}, false});
+  map.occluders.push_back({"post east", {{6.0, 2.55}, {6.0, 2.75}}, false});
+  const Pose2 truth{5.0, 3.0, M_PI / 2}, mirrored{5.0, 3.0, -M_PI / 2};
+  testing::SyntheticSensor sensor;
+  sensor.range_sigma = 0.002;
+  const auto scan = testing::render_detections(map, truth, sensor, rng);
+  ASSERT_EQ(scan.detections.size(), 4u);
+  MatchResult result;
+  ReflectorMatcher without_prior(map, MatcherConfig{});
+  without_prior.match(scan.detections, nullptr, result);
+  ASSERT_EQ(result.status, MatchStatus::kAmbiguous);
+
+  const double sigma_theta = 5.0 * M_PI / 180.0;
+  for (const Pose2& meant : {truth, mirrored}) {
+    ReflectorMatcher matcher(map, MatcherConfig{});
+    PosePrior prior;
+    prior.map_T_laser = Pose2{5.0, 3.3, meant.theta};
+    prior.covariance = Eigen::Vector3d(0.2 * 0.2, 0.2 * 0.2, sigma_theta * sigma_theta).asDiagonal();
+    matcher.match(scan.detections, &prior, result);
+    EXPECT_TRUE(matcher.tracking_association_failed());
+    EXPECT_TRUE(matcher.prior_settled_ambiguity());
+    EXPECT_EQ(result.status, MatchStatus::kOk);
+    EXPECT_EQ(result.mode, MatchMode::kTracking);
+    EXPECT_EQ(result.matches.size(), 4u);
+    EXPECT_TRUE(approx_equal(result.map_T_laser, meant, 0.02, 0.01))
+        << result.map_T_laser.x << " " << result.map_T_laser.y << " " << result.map_T_laser.theta;
+
+    // A prior that admits both headings (or neither pose) leaves the scan AMBIGUOUS.
+    prior.covariance(2, 2) = M_PI * M_PI;
+    matcher.match(scan.detections, &prior, result);
+    EXPECT_EQ(result.status, MatchStatus::kAmbiguous);
+    EXPECT_FALSE(matcher.prior_settled_ambiguity());
+    prior.covariance(2, 2) = sigma_theta * sigma_theta;
+    prior.map_T_laser.x = 3.0;
+    matcher.match(scan.detections, &prior, result);
+    EXPECT_NE(result.status, MatchStatus::kOk);
+  }
+}
+
 }  // namespace REFLOC_UNITY_ID
 }  // namespace refloc
