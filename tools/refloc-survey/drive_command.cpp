@@ -1,6 +1,7 @@
 #include "drive_command.hpp"
 
 #include "drive_anchors.hpp"
+#include "drive_live.hpp"
 #include "drive_log.hpp"
 #include "drive_map_comparison.hpp"
 #include "drive_report.hpp"
@@ -25,6 +26,27 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// --live: the drive recorded from the bus into a log; returns its path.
+std::string record_live(const DriveCommandOptions& o, const ExtractorServiceConfig& extractor) {
+  DriveLiveOptions live;
+  live.lcm_url = o.lcm_url;
+  live.scan_channel = extractor.input_channel;
+  live.odometry_channel = extractor.odometry_channel;
+  live.truth_channel = o.truth_channel;
+  live.record_path = o.record_path.empty()
+                         ? std::filesystem::path(o.out_path).replace_extension(".lcmlog").string()
+                         : o.record_path;
+  live.duration_s = o.duration_s;
+  live.timeout_s = o.timeout_s;
+  if (!o.force && std::filesystem::exists(live.record_path))
+    throw ConfigError(live.record_path + ": exists (the log of another drive?); give --record or --force");
+  const DriveLiveCounts counts = record_drive_live(live);
+  if (counts.scans == 0)
+    throw ConfigError(
+        fmt::format("no scan on {} ({}): nothing to survey", live.scan_channel, stop_reason(counts.stop)));
+  return live.record_path;
 }
 
 std::vector<DriveScan> read_scans(const DriveCommandOptions& o, const ExtractorServiceConfig& extractor,
@@ -74,9 +96,29 @@ void draw(const DriveCommandOptions& o) {
 CLI::App* add_drive_command(CLI::App& app, DriveCommandOptions& o) {
   o.robot_path = shipped_path(o.robot_path);
   o.extractor_path = shipped_path(o.extractor_path);
-  CLI::App* c =
-      app.add_subcommand("drive", "survey a hall from an LCM log of a drive (LMS100_SCAN, ODOMETRY)");
-  c->add_option("--log", o.log_path, "LCM log of the drive")->required();
+  CLI::App* c = app.add_subcommand(
+      "drive", "survey a hall from an LCM log of a drive (LMS100_SCAN, ODOMETRY), or live");
+  CLI::Option* log = c->add_option("--log", o.log_path, "LCM log of the drive");
+  CLI::Option* live =
+      c->add_flag("--live", o.live,
+                  "record the drive from the bus (until Ctrl-C, --duration-s or --timeout-s), "
+                  "then survey that log");
+  log->excludes(live);
+  c->add_option("--record", o.record_path, "live: the LCM log to write (default: --out with .lcmlog)")
+      ->needs(live);
+  c->add_option("--lcm-url", o.lcm_url, "live: the bus (default: LCM_DEFAULT_URL, else LCM's default)")
+      ->needs(live);
+  c->add_option("--duration-s", o.duration_s, "live: stop recording after this long; 0: at Ctrl-C")
+      ->check(CLI::Range(0.0, 86400.0))
+      ->capture_default_str()
+      ->needs(live);
+  c->add_option("--timeout-s", o.timeout_s, "live: stop recording after this long without a scan")
+      ->check(CLI::Range(0.1, 3600.0))
+      ->capture_default_str()
+      ->needs(live);
+  c->callback([&o] {
+    if (o.log_path.empty() && !o.live) throw CLI::RequiredError("--log F or --live");
+  });
   c->add_option("--out", o.out_path, "the map file to write (format 2)")->required();
   c->add_option("--robot", o.robot_path, "robot file (laser mount, odometry noise)")->capture_default_str();
   c->add_option("--extractor-config", o.extractor_path, "reflector_extractor's config, as the service ran")
@@ -113,8 +155,11 @@ int run_drive_command(const DriveCommandOptions& o) {
   if (o.mapping_corrections) extractor.extractor = mapping_corrections(extractor.extractor);
   const std::vector<SurveyAnchor> anchors =
       o.anchors_path.empty() ? std::vector<SurveyAnchor>{} : load_survey_anchors(o.anchors_path);
-  const std::vector<DriveScan> scans = read_scans(o, extractor, robot.robot_T_laser);
-  const double read_s = seconds_since(start);
+  DriveCommandOptions from_log = o;
+  if (o.live) from_log.log_path = record_live(o, extractor);
+  const auto read_start = std::chrono::steady_clock::now();
+  const std::vector<DriveScan> scans = read_scans(from_log, extractor, robot.robot_T_laser);
+  const double read_s = seconds_since(read_start);
 
   DriveSurveyConfig config;
   config.bundle.estimate_range_bias = o.estimate_range_bias;
@@ -124,8 +169,8 @@ int run_drive_command(const DriveCommandOptions& o) {
   const ReflectorMap map =
       surveyed_map(survey, survey.occluders, o.map_id, extractor.extractor.reflector_radius);
   fmt::print("{}", survey_report_text(survey));
-  fmt::print("{} occluders traced; log read and extracted in {:.2f} s; total {:.2f} s\n",
-             survey.occluders.size(), read_s, seconds_since(start));
+  fmt::print("{} occluders traced; log read and extracted in {:.2f} s; total {:.2f} s{}\n",
+             survey.occluders.size(), read_s, seconds_since(start), o.live ? " (with the recording)" : "");
   if (map.reflectors.size() < 3) {
     fmt::print(stderr, "refloc-survey: no map written: {} reflectors surveyed, a map needs 3\n",
                map.reflectors.size());
@@ -136,7 +181,7 @@ int run_drive_command(const DriveCommandOptions& o) {
   write_reflector_map(map, o.out_path);
   fmt::print("map written: {}{}\n", o.out_path, self_similar.empty() ? "" : " (with the warning above)");
   if (!o.report_dir.empty()) write_survey_report(o.report_dir, survey, map);
-  if (!o.truth_path.empty()) compare_with_truth(o, map, survey, robot.robot_T_laser);
+  if (!o.truth_path.empty()) compare_with_truth(from_log, map, survey, robot.robot_T_laser);
   if (!o.report_dir.empty()) draw(o);
   return 0;
 }

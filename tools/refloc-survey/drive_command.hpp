@@ -11,6 +11,11 @@ namespace refloc {
 
 struct DriveCommandOptions {
   std::string log_path;
+  bool live = false;        ///< record the drive from the bus first (drive_live.hpp)
+  std::string record_path;  ///< live: the log written; empty: --out with the extension .lcmlog
+  std::string lcm_url;      ///< live
+  double duration_s = 0.0;  ///< live: 0 = until Ctrl-C
+  double timeout_s = 10.0;  ///< live: stop after this long without a scan
   std::string robot_path = "deploy/config/robot.json";
   std::string extractor_path = "deploy/config/reflector_extractor.json";
   std::string out_path;

@@ -12,6 +12,8 @@
 #include "world_renderer/scan_renderer.hpp"
 #include "world_renderer/world_loader.hpp"
 
+#include <refloc/odometry_t.hpp>
+
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -96,6 +98,19 @@ inline RenderedDrive render_drive(const RenderedDriveOptions& o) {
 
 /// The drive every test of this folder uses, rendered once: the default options with a +20 mm
 /// range offset.
+/// An odometry sample as mecanum_odometry publishes it on ODOMETRY.
+inline odometry_t odometry_message(const OdometrySample& s) {
+  odometry_t m{};
+  m.utime = s.utime;
+  m.x = s.odom_T_robot.x;
+  m.y = s.odom_T_robot.y;
+  m.theta = s.odom_T_robot.theta;
+  m.vx = s.twist.vx;
+  m.vy = s.twist.vy;
+  m.wz = s.twist.wz;
+  return m;
+}
+
 inline const RenderedDrive& lower_aisle_drive() {
   static const RenderedDrive drive = [] {
     RenderedDriveOptions o;

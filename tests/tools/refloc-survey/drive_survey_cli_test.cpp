@@ -22,18 +22,6 @@ namespace REFLOC_UNITY_ID {  // per file: a folder's tests compile as one unit
 
 const std::string kSurvey = std::string(REFLOC_BINARY_DIR) + "/bin/refloc-survey";
 
-odometry_t to_message(const OdometrySample& s) {
-  odometry_t m{};
-  m.utime = s.utime;
-  m.x = s.odom_T_robot.x;
-  m.y = s.odom_T_robot.y;
-  m.theta = s.odom_T_robot.theta;
-  m.vx = s.twist.vx;
-  m.vy = s.twist.vy;
-  m.wz = s.twist.wz;
-  return m;
-}
-
 const std::string& drive_log() {
   static const std::string path = [] {
     const std::string p = testing::temp_path("drive.lcmlog");
@@ -46,7 +34,7 @@ const std::string& drive_log() {
         log.write("LMS100_SCAN", s.utime + 16000, to_lcm(s));
       } else {
         const OdometrySample& o = d.raw_odometry[odometry++];
-        log.write("ODOMETRY", o.utime + 500, to_message(o));
+        log.write("ODOMETRY", o.utime + 500, testing::odometry_message(o));
       }
     }
     for (size_t k = 0; k < d.scans.size(); ++k) {  // the truth at every scan, as robot_sim publishes it
