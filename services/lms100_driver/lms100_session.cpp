@@ -32,10 +32,6 @@ const char* to_string(SessionState state) {
   return "?";
 }
 
-namespace {
-constexpr int kMaxPollMs = 100;  // upper bound on one poll so a stop flag set without the pipe is seen
-}  // namespace
-
 Lms100Session::Lms100Session(Lms100SessionConfig config, ScanCallback on_scan, StateCallback on_state)
     : config_(std::move(config)),
       on_scan_(std::move(on_scan)),

@@ -150,6 +150,9 @@ class Lms100Session {
   void sync_wire_counters();
   void count_rejection(const ScanPlausibility& verdict);
 
+  /// Upper bound on one poll() so a stop flag set without the wake pipe is seen [ms].
+  static constexpr int kMaxPollMs = 100;
+
   Lms100SessionConfig config_;
   ScanCallback on_scan_;
   StateCallback on_state_;

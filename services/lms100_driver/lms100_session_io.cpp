@@ -14,10 +14,6 @@
 
 namespace refloc {
 
-namespace {
-constexpr int kMaxPollMs = 100;  // upper bound on one poll so a stop flag set without the pipe is seen
-}  // namespace
-
 Lms100Session::Wait Lms100Session::transact(const std::string& request, double timeout_s, std::string& reply,
                                             std::string& why) {
   if (stop_.load()) {

@@ -38,10 +38,6 @@ const char* find_args(const Command* table, size_t n, std::string_view head) {
 
 size_t width(char code) { return code == 'b' ? 1 : code == 'w' ? 2 : 4; }
 
-void put(std::string& out, uint32_t value, size_t bytes) {
-  for (size_t i = bytes; i-- > 0;) out.push_back(static_cast<char>((value >> (8 * i)) & 0xFF));
-}
-
 uint32_t get(std::string_view in, size_t at, size_t bytes) {
   uint32_t v = 0;
   for (size_t i = 0; i < bytes; ++i) v = (v << 8) | static_cast<uint8_t>(in[at + i]);
@@ -49,6 +45,10 @@ uint32_t get(std::string_view in, size_t at, size_t bytes) {
 }
 
 }  // namespace
+
+void put_big_endian(std::string& out, uint32_t value, size_t bytes) {
+  for (size_t i = bytes; i-- > 0;) out.push_back(static_cast<char>((value >> (8 * i)) & 0xFF));
+}
 
 void ColaBRequestReader::feed(const uint8_t* data, size_t size) {
   received_.erase(0, read_pos_);
@@ -85,7 +85,7 @@ bool ColaBRequestReader::next(std::string& payload) {
 
 void frame_cola_b_telegram(std::string_view payload, std::string& out) {
   out.append(cola::kColaBMagic);
-  put(out, static_cast<uint32_t>(payload.size()), 4);
+  put_big_endian(out, static_cast<uint32_t>(payload.size()), 4);
   out.append(payload);
   uint8_t x = 0;
   for (const char c : payload) x ^= static_cast<uint8_t>(c);
@@ -123,7 +123,7 @@ void cola_b_reply_from_text(std::string_view text, std::string& payload) {
     int64_t code = 0;
     if (t.size() > 1) parse_cola_request_number(t[1], code);
     payload = "sFA";
-    put(payload, static_cast<uint32_t>(code), 2);
+    put_big_endian(payload, static_cast<uint32_t>(code), 2);
     return;
   }
   if (t.size() < 2) return;
@@ -137,12 +137,12 @@ void cola_b_reply_from_text(std::string_view text, std::string& payload) {
     if (*a == 's') {  // "<hex length> <chars>": the chars are one token in every reply we translate
       parse_cola_request_number(t[k++], v);
       const std::string_view chars = k < t.size() ? t[k++] : std::string_view{};
-      put(payload, static_cast<uint32_t>(chars.size()), 2);
+      put_big_endian(payload, static_cast<uint32_t>(chars.size()), 2);
       payload.append(chars);
       continue;
     }
     parse_cola_request_number(t[k++], v);
-    put(payload, static_cast<uint32_t>(v), width(*a));
+    put_big_endian(payload, static_cast<uint32_t>(v), width(*a));
   }
 }
 

@@ -33,6 +33,9 @@ class ColaBRequestReader {
   size_t read_pos_ = 0;
 };
 
+/// Appends the low `bytes` bytes of value, big-endian (CoLa-B's byte order).
+void put_big_endian(std::string& out, uint32_t value, size_t bytes);
+
 /// Wraps a payload: magic, big-endian length, payload, XOR checksum.
 void frame_cola_b_telegram(std::string_view payload, std::string& out);
 

@@ -1,5 +1,7 @@
 #include "world_renderer/scan_render_beam.hpp"
 
+#include "common/plane_geometry.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,8 +18,6 @@ struct SubrayHit {
   int id = -1;
   double remission = 0.0;
 };
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 /// Whether the segment a-b can meet the spot's cone |y| <= h0 + tan * x, 0 <= x <= x_max,
 /// in beam coordinates: a 1-D feasibility test on the segment parameter s in [0, 1].
@@ -140,11 +140,11 @@ BeamEcho trace_beam(const World& world, const BeamProfile& profile, const Lms100
     }
     const Eigen::Vector2d e = s.map_p_b - s.map_p_a;
     for (int k = 0; k < n; ++k) {
-      const double denom = cross(dir[k], e);
+      const double denom = cross2(dir[k], e);
       if (std::abs(denom) < 1e-12) continue;  // parallel: grazing, no echo anyway
       const Eigen::Vector2d w = s.map_p_a - origin[k];
-      const double t = cross(w, e) / denom;
-      const double u = cross(w, dir[k]) / denom;
+      const double t = cross2(w, e) / denom;
+      const double u = cross2(w, dir[k]) / denom;
       if (t <= 0.0 || t >= hit[k].t || u < 0.0 || u > 1.0) continue;
       hit[k].t = t;
       hit[k].cos_incidence = std::abs(denom) / e.norm();

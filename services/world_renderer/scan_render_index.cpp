@@ -1,19 +1,11 @@
 #include "world_renderer/scan_render_index.hpp"
 
+#include "common/plane_geometry.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace refloc::sim {
-namespace {
-
-double point_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d e = b - a;
-  const double t = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
-  return (a + t * e - p).norm();
-}
-
-}  // namespace
-
 void BeamCandidateIndex::add_all(int32_t code) {
   spans_.push_back({code, 0, static_cast<int32_t>(num_beams_) - 1});
 }

@@ -1,5 +1,7 @@
 #include "world_renderer/world_visibility.hpp"
 
+#include "common/plane_geometry.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,24 +9,16 @@
 namespace refloc::sim {
 namespace {
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 bool segments_intersect(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& a,
                         const Eigen::Vector2d& b) {
   const Eigen::Vector2d r = q - p;
   const Eigen::Vector2d e = b - a;
-  const double denom = cross(r, e);
+  const double denom = cross2(r, e);
   if (std::abs(denom) < 1e-12) return false;  // parallel: a grazing sight line is not blocked
   const Eigen::Vector2d w = a - p;
-  const double t = cross(w, e) / denom;
-  const double u = cross(w, r) / denom;
+  const double t = cross2(w, e) / denom;
+  const double u = cross2(w, r) / denom;
   return t > 0.0 && t < 1.0 && u >= 0.0 && u <= 1.0;
-}
-
-double point_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d e = b - a;
-  const double t = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
-  return (a + t * e - p).norm();
 }
 
 }  // namespace

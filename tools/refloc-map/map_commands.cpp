@@ -2,6 +2,7 @@
 
 #include "common/bounded_file_read.hpp"
 #include "common/json_config.hpp"
+#include "common/output_file.hpp"
 #include "reflector_csv.hpp"
 
 #include <fmt/format.h>
@@ -14,11 +15,6 @@
 
 namespace refloc {
 namespace {
-
-void refuse_to_replace(const std::string& path, bool force) {
-  if (!force && std::filesystem::exists(path))
-    throw ConfigError(fmt::format("{}: exists; give --force to replace it", path));
-}
 
 void print_warnings(const ReflectorMap& map) {
   for (const std::string& w : map.warnings) std::fprintf(stderr, "refloc-map: warning: %s\n", w.c_str());

@@ -2,6 +2,7 @@
 
 #include "common/guarded_main.hpp"
 #include "common/json_config.hpp"
+#include "common/output_file.hpp"
 
 #include <fmt/format.h>
 
@@ -80,11 +81,6 @@ void plan_candidates(const MapHealthReport& evidence, const MapUpdateSelection& 
   }
 }
 
-void refuse_to_replace(const std::string& path, bool force) {
-  if (!force && std::filesystem::exists(path))
-    throw ConfigError(fmt::format("{}: exists; give --force to replace it (or another --out)", path));
-}
-
 }  // namespace
 
 void check_evidence_is_for(const ReflectorMap& map, const MapHealthReport& evidence,
@@ -146,7 +142,7 @@ int run_update_command(const UpdateCommandOptions& o) {
     return kExitUsageError;
   }
   const ReflectorMap map = load_reflector_map(o.map_path);
-  if (!o.dry_run) refuse_to_replace(o.out_path, o.force);
+  if (!o.dry_run) refuse_to_replace(o.out_path, o.force, "or another --out");
   const MapHealthReport evidence = last_map_health(o.evidence_path, o.channel, map);
   check_evidence_is_for(map, evidence, o.evidence_path);
   const bool any = o.add_candidates || o.remove_missing || o.move_moved;

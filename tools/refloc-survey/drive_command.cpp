@@ -10,6 +10,7 @@
 
 #include "common/guarded_main.hpp"
 #include "common/json_config.hpp"
+#include "common/output_file.hpp"
 #include "common/program_version.hpp"
 #include "common/robot_config.hpp"
 #include "reflector_extractor/extractor_config_file.hpp"
@@ -40,8 +41,7 @@ std::string record_live(const DriveCommandOptions& o, const ExtractorServiceConf
                          : o.record_path;
   live.duration_s = o.duration_s;
   live.timeout_s = o.timeout_s;
-  if (!o.force && std::filesystem::exists(live.record_path))
-    throw ConfigError(live.record_path + ": exists (the log of another drive?); give --record or --force");
+  refuse_to_replace(live.record_path, o.force, "the log of another drive? or give --record");
   const DriveLiveCounts counts = record_drive_live(live);
   if (counts.scans == 0)
     throw ConfigError(
@@ -148,8 +148,7 @@ CLI::App* add_drive_command(CLI::App& app, DriveCommandOptions& o) {
 
 int run_drive_command(const DriveCommandOptions& o) {
   const auto start = std::chrono::steady_clock::now();
-  if (!o.force && std::filesystem::exists(o.out_path))
-    throw ConfigError(o.out_path + ": exists; give --force to replace it");
+  refuse_to_replace(o.out_path, o.force);
   const RobotConfig robot = load_robot_config(o.robot_path);
   ExtractorServiceConfig extractor = load_extractor_service_config(o.extractor_path);
   if (o.mapping_corrections) extractor.extractor = mapping_corrections(extractor.extractor);

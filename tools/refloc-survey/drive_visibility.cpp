@@ -1,20 +1,20 @@
 #include "drive_visibility.hpp"
 
+#include "common/plane_geometry.hpp"
+
 #include <cmath>
 
 namespace refloc {
 namespace {
 
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 /// Proper intersection of segments p-p2 and q-q2 (touching counts).
 bool segments_cross(const Eigen::Vector2d& p, const Eigen::Vector2d& p2, const Eigen::Vector2d& q,
                     const Eigen::Vector2d& q2) {
   const Eigen::Vector2d r = p2 - p, s = q2 - q;
-  const double denominator = cross(r, s);
+  const double denominator = cross2(r, s);
   if (std::abs(denominator) < 1e-12) return false;  // parallel: a wall along the line of sight hides nothing
-  const double t = cross(q - p, s) / denominator;
-  const double u = cross(q - p, r) / denominator;
+  const double t = cross2(q - p, s) / denominator;
+  const double u = cross2(q - p, r) / denominator;
   return t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0;
 }
 

@@ -2,6 +2,7 @@
 
 #include "common/guarded_main.hpp"
 #include "common/json_config.hpp"
+#include "common/output_file.hpp"
 #include "common/program_version.hpp"
 #include "common/robot_config.hpp"
 #include "reflector_extractor/extractor_config_file.hpp"
@@ -92,8 +93,7 @@ CLI::App* add_static_command(CLI::App& app, StaticCommandOptions& o) {
 }
 
 int run_static_command(const StaticCommandOptions& o) {
-  if (!o.force && std::filesystem::exists(o.out_path))
-    throw ConfigError(fmt::format("{}: exists; give --force to replace it", o.out_path));
+  refuse_to_replace(o.out_path, o.force);
   const RobotConfig robot = load_robot_config(o.robot_path);
   const ExtractorServiceConfig extractor = load_extractor_service_config(o.extractor_path);
   StaticSurvey survey(survey_config(o));
