@@ -86,6 +86,38 @@ TEST(RenderedScanPipeline, SymmetricWorldIsNeverWrongOk) {
   EXPECT_EQ(t.wrong_ok, 0);
 }
 
+/// Scans rendered in the demo hall from random drivable poses, extracted as the service does.
+struct DemoHallScenes {
+  explicit DemoHallScenes(unsigned seed)
+      : world(sim::load_world(config_dir() + "/world_demo.json")),
+        map(load_reflector_map(world.map_file)),
+        robot_T_laser(load_robot_config(config_dir() + "/robot.json").robot_T_laser),
+        rng(seed) {}
+  /// The next random robot pose in the drivable area, as map_T_laser.
+  Pose2 next_laser_pose() {
+    while (true) {
+      const Pose2 truth{ux(rng), uy(rng), ua(rng)};
+      if (world.drivable_areas.empty() || world.is_drivable(truth.translation()))
+        return truth * robot_T_laser;
+    }
+  }
+  std::vector<ReflectorDetection> detections(const Pose2& map_T_laser, int64_t utime) {
+    renderer.render(world, map_T_laser, utime, rng, scan);
+    return extractor.extract(scan);
+  }
+
+  static std::string config_dir() { return std::string(REFLOC_SOURCE_DIR) + "/deploy/config"; }
+
+  const sim::World world;
+  const ReflectorMap map;
+  const Pose2 robot_T_laser;
+  ReflectorExtractor extractor;
+  sim::ScanRenderer renderer;
+  std::mt19937_64 rng;
+  std::uniform_real_distribution<double> ux{0.5, 19.5}, uy{0.5, 11.5}, ua{-M_PI, M_PI};
+  LaserScan scan;
+};
+
 /// Wrong OK matches in the demo hall when tracking starts from a confident prior offset metres
 /// off the truth (a kidnapped robot, an odometry jump), with and without the global check; a
 /// pose counts as OK (or wrong) when either of its two scans is.
@@ -94,27 +126,17 @@ struct WrongPriorTally {
 };
 
 WrongPriorTally run_wrong_prior(double offset, int poses, unsigned seed) {
-  const std::string dir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config";
-  const sim::World world = sim::load_world(dir + "/world_demo.json");
-  const ReflectorMap map = load_reflector_map(world.map_file);
-  const Pose2 robot_T_laser = load_robot_config(dir + "/robot.json").robot_T_laser;
-  ReflectorExtractor extractor;
+  DemoHallScenes hall(seed);
   MatcherConfig trusting_config;
   trusting_config.tracking.max_unexplained = 1000;
   trusting_config.tracking.min_score = -1000.0;
-  ReflectorMatcher checked(map, MatcherConfig{}), trusting(map, trusting_config);
-  sim::ScanRenderer renderer;
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> ux(0.5, 19.5), uy(0.5, 11.5), ua(-M_PI, M_PI);
-  LaserScan scan;
+  ReflectorMatcher checked(hall.map, MatcherConfig{}), trusting(hall.map, trusting_config);
   MatchResult match;
   WrongPriorTally t;
   while (t.scans < poses) {
-    const Pose2 truth{ux(rng), uy(rng), ua(rng)};
-    if (!world.drivable_areas.empty() && !world.is_drivable(truth.translation())) continue;
+    const Pose2 map_T_laser = hall.next_laser_pose();
     ++t.scans;
-    const Pose2 map_T_laser = truth * robot_T_laser;
-    const double dir = ua(rng);
+    const double dir = hall.ua(hall.rng);
     PosePrior prior;
     prior.map_T_laser = Pose2{map_T_laser.x + offset * std::cos(dir), map_T_laser.y + offset * std::sin(dir),
                               map_T_laser.theta};
@@ -122,10 +144,9 @@ WrongPriorTally run_wrong_prior(double offset, int poses, unsigned seed) {
     // Two scans of the standing robot with the prior unchanged (no fix has moved POSE yet): an
     // overrule of the prior on three pairs is a fix only when the second scan repeats it.
     std::array<std::vector<ReflectorDetection>, 2> detections;
-    for (int k = 0; k < 2; ++k) {
-      renderer.render(world, map_T_laser, 1'000'000 + (2 * t.scans + k) * 20'000, rng, scan);
-      detections[static_cast<size_t>(k)] = extractor.extract(scan);
-    }
+    for (int k = 0; k < 2; ++k)
+      detections[static_cast<size_t>(k)] =
+          hall.detections(map_T_laser, 1'000'000 + (2 * t.scans + k) * 20'000);
     for (ReflectorMatcher* m : {&checked, &trusting}) {
       bool ok = false, wrong = false;
       for (const std::vector<ReflectorDetection>& d : detections) {
@@ -160,30 +181,19 @@ struct UserPoseTally {
 };
 
 UserPoseTally run_user_pose(int poses, unsigned seed) {
-  const std::string dir = std::string(REFLOC_SOURCE_DIR) + "/deploy/config";
-  const sim::World world = sim::load_world(dir + "/world_demo.json");
-  const ReflectorMap map = load_reflector_map(world.map_file);
-  const Pose2 robot_T_laser = load_robot_config(dir + "/robot.json").robot_T_laser;
-  ReflectorExtractor extractor;
-  sim::ScanRenderer renderer;
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> ux(0.5, 19.5), uy(0.5, 11.5), ua(-M_PI, M_PI);
-  LaserScan scan;
+  DemoHallScenes hall(seed);
   MatchResult match;
   UserPoseTally t;
   while (t.scans < poses) {
-    const Pose2 truth{ux(rng), uy(rng), ua(rng)};
-    if (!world.drivable_areas.empty() && !world.is_drivable(truth.translation())) continue;
+    const Pose2 map_T_laser = hall.next_laser_pose();
     ++t.scans;
     // A fresh matcher per pose: the user's pose is the first prior it sees.
-    ReflectorMatcher matcher(map, MatcherConfig{});
-    const Pose2 map_T_laser = truth * robot_T_laser;
+    ReflectorMatcher matcher(hall.map, MatcherConfig{});
     PosePrior prior;
     prior.map_T_laser = map_T_laser;
     const double sigma_theta = 5.0 * M_PI / 180.0;
     prior.covariance = Eigen::Vector3d(0.2 * 0.2, 0.2 * 0.2, sigma_theta * sigma_theta).asDiagonal();
-    renderer.render(world, map_T_laser, 1'000'000 + t.scans * 20'000, rng, scan);
-    matcher.match(extractor.extract(scan), &prior, match);
+    matcher.match(hall.detections(map_T_laser, 1'000'000 + t.scans * 20'000), &prior, match);
     if (match.status == MatchStatus::kAmbiguous) ++t.ambiguous;
     if (match.status != MatchStatus::kOk) continue;
     (match.mode == MatchMode::kTracking ? t.confirmed : t.ok_global) += 1;
