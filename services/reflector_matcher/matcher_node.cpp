@@ -87,7 +87,7 @@ const MatcherOutput& MatcherNode::on_detections(int64_t utime, int64_t scan_coun
     output_.events.push_back(
         {"ambiguities_settled_by_prior", NodeEvent::Level::kInfo,
          fmt::format("tracking from the prior failed and the map-wide search was AMBIGUOUS; the prior "
-                     "admits only its best pose ({:.2f}, {:.2f}) m: OK",
+                     "admits one of its poses alone, ({:.2f}, {:.2f}) m: OK",
                      output_.result.map_T_laser.x, output_.result.map_T_laser.y)});
   if (matcher_.held_bare_overrule())
     output_.events.push_back(

@@ -11,10 +11,11 @@ namespace {
 /// chi-square, 3 degrees of freedom, 99.9 %: the prior's region in (x, y, theta).
 constexpr double kPriorGateChi2 = 16.27;
 
-bool inside_prior_gate(const Pose2& map_T_laser, const PosePrior& prior, const Eigen::Matrix3d& covariance) {
+bool inside_prior_gate(const Pose2& map_T_laser, const PosePrior& prior,
+                       const Eigen::LDLT<Eigen::Matrix3d>& covariance) {
   const Eigen::Vector3d e(map_T_laser.x - prior.map_T_laser.x, map_T_laser.y - prior.map_T_laser.y,
                           wrap_angle(map_T_laser.theta - prior.map_T_laser.theta));
-  return e.dot(covariance.ldlt().solve(e)) <= kPriorGateChi2;
+  return e.dot(covariance.solve(e)) <= kPriorGateChi2;
 }
 
 }  // namespace
@@ -108,7 +109,7 @@ void ReflectorMatcher::decide_with_prior(const PosePrior& prior,
   // browser test, once in CI). The prior is independent evidence: it settles the choice when it
   // admits exactly one of the hypotheses, the best or a rival.
   if (result.matches.empty()) return;
-  const Eigen::Matrix3d covariance = floored_prior_covariance(prior, config_.tracking);
+  const Eigen::LDLT<Eigen::Matrix3d> covariance(floored_prior_covariance(prior, config_.tracking));
   const bool best_inside = inside_prior_gate(result.map_T_laser, prior, covariance);
   if (result.status == MatchStatus::kOk) {
     if (best_inside) result.mode = MatchMode::kTracking;  // the map-wide search confirms the prior

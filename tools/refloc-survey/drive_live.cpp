@@ -25,14 +25,21 @@ class DriveRecorder {
       : o_(o), counts_(counts), log_(o.record_path, "w") {
     if (!log_.good()) throw ConfigError(o.record_path + ": cannot write an LCM log there");
   }
+  /// A write failed: nothing more is written; the caller stops and reports it (no exception
+  /// through LCM's C dispatch).
+  bool write_failed() const { return write_failed_; }
   void on_message(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    if (write_failed_) return;
     lcm::LogEvent event;
     event.eventnum = next_event_++;
     event.timestamp = buffer->recv_utime;
     event.channel = channel;
     event.datalen = static_cast<int32_t>(buffer->data_size);
     event.data = buffer->data;
-    if (log_.writeEvent(&event) != 0) throw ConfigError(o_.record_path + ": write failed (disk full?)");
+    if (log_.writeEvent(&event) != 0) {
+      write_failed_ = true;
+      return;
+    }
     ++(channel == o_.scan_channel       ? counts_.scans
        : channel == o_.odometry_channel ? counts_.odometry
                                         : counts_.truth);
@@ -43,6 +50,7 @@ class DriveRecorder {
   DriveLiveCounts& counts_;
   lcm::LogFile log_;
   int64_t next_event_ = 0;
+  bool write_failed_ = false;
 };
 
 }  // namespace
@@ -85,7 +93,7 @@ DriveLiveCounts record_drive_live(const DriveLiveOptions& o) {
     bus.handleTimeout(100);
     const auto now = Clock::now();
     if (counts.scans != scans_seen) scans_seen = counts.scans, last_scan = now;
-    if (g_stop_requested) {
+    if (g_stop_requested || recorder.write_failed()) {
       counts.stop = DriveLiveCounts::Stop::kInterrupted;
       break;
     }
@@ -105,6 +113,7 @@ DriveLiveCounts record_drive_live(const DriveLiveOptions& o) {
   }
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
+  if (recorder.write_failed()) throw ConfigError(o.record_path + ": write failed (disk full?)");
   fmt::print("recorded {} scans and {} odometry messages in {:.1f} s ({})\n", counts.scans, counts.odometry,
              seconds(Clock::now() - start), stop_reason(counts.stop));
   return counts;
