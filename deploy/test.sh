@@ -22,4 +22,8 @@ cmake --build "$build_dir" -j "$jobs"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 cd "$build_dir"
-ctest --output-on-failure -j "$jobs" --timeout 600 "$@"
+# A CI log shown cut keeps its tail: after a failure the failed tests' FAIL lines come last.
+rc=0
+ctest --output-on-failure -j "$jobs" --timeout 600 "$@" || rc=$?
+[ "$rc" = 0 ] || /usr/bin/python3 "$root/tests/tools/failed_test_summary.py" . || true
+exit "$rc"

@@ -5,7 +5,7 @@
 # even when supervisorctl is slow on a loaded host) while every service in turn is killed
 # with SIGKILL. Checks: supervisord restarts it; no other program's pid changes;
 # the mission still reaches every waypoint within tolerance; from the LCM log
-# (restart_log_check): POSE gap <= 1 s per kill, the new process back to useful
+# (restart_log_check): POSE gap <= 1 s per kill (1.5 s sanitized), the new process back to useful
 # output, and the restarted matcher's first OK is a global relocalization.
 #   restart_under_load.sh REPO_ROOT BUILD_DIR
 # Not killed: robot_sim is the simulated physical world (killing it resets the
@@ -146,6 +146,17 @@ assert r["max_waypoint_error_mm"] < 20.0, r["max_waypoint_error_mm"]
 print(f"mission: {r['waypoints_reached']}/{r['waypoints_total']} waypoints, max true error "
       f"{r['max_waypoint_error_mm']:.1f} mm, {r['duration_s']:.1f} s, goal resends {r['goal_resends']}")
 PY
-"$build/bin/ops_restart_log_check" --log "$tmp/logs/refloc.0" --kills "$kills" || fail "restart checks (table above)"
+# The POSE gap bound is the field's 1 s in a Release build (measured there: gaps 14-51 ms,
+# respawn 32-93 ms). A sanitized build (CI's) spends 0.4-1.1 s between the kill and the new
+# process's main() on a loaded 2-core host (ASan's start-up; measured in CI: respawn 417-1140 ms
+# for every service alike), which is the whole gap when pose_fusion itself is killed: it crossed
+# 1 s once (1024 ms, respawn 971 ms). There the bound is 1.5 s: still a restart, not a wait.
+max_pose_gap=1.0
+if [[ "$(ldd "$build/bin/pose_fusion" 2>/dev/null)" == *libasan* ]]; then
+  max_pose_gap=1.5
+  echo "sanitized build: POSE gap bound 1.5 s instead of 1 s"
+fi
+"$build/bin/ops_restart_log_check" --log "$tmp/logs/refloc.0" --kills "$kills" --max-pose-gap "$max_pose_gap" ||
+  fail "restart checks (table above)"
 passed=true
 echo "PASS"

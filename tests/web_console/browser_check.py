@@ -4,7 +4,8 @@ Debian's python3-selenium) against a running simulated stack whose web_console h
 
   browser_check.py page --url URL --map MAP --token T --screenshot PNG --out JSON
       loads the page; waits for the legend's reflector count (the map file's) and an OK POSE line,
-      both within 2 s of the page load; clicks "Set goal" and a map point with no token (refused by
+      both within 2 s of the page's load event (the load itself
+      is printed, bounded at 10 s); clicks "Set goal" and a map point with no token (refused by
       the service), then with the token; Stop; then "Set pose" dragged from the drawn POSE along its
       heading (the robot is here); saves a screenshot; writes what it clicked to JSON.
   browser_check.py verify --clicks JSON --log-jsonl FILE
@@ -53,8 +54,20 @@ def page(args):
     failures = []
     clicks = {}
     try:
-        loaded = time.monotonic()
+        # The 2 s are the console's: counted from the page's load event (driver.get returns
+        # then), not from Chromium's own start and navigation, which took 2.4 s once on a
+        # loaded CI host with a sanitized server; that time is printed and bounded apart.
+        requested = time.monotonic()
         driver.get(args.url)
+        loaded = time.monotonic()
+        navigation = driver.execute_script(
+            "const n = performance.getEntriesByType('navigation')[0];"
+            "return n ? [n.responseEnd, n.loadEventEnd] : null;")
+        print(f"page load: {loaded - requested:.2f} s from the request to the load event"
+              + (f" (Chromium's navigation: response {navigation[0]:.0f} ms, load event "
+                 f"{navigation[1]:.0f} ms)" if navigation else ""))
+        if loaded - requested > 10.0:
+            fail(failures, f"the page took {loaded - requested:.1f} s to load (bound 10 s)")
         legend_s = pose_s = None
         while time.monotonic() - loaded < 10.0 and (legend_s is None or pose_s is None):
             legend = driver.find_element(By.ID, "map-legend").text
