@@ -14,7 +14,11 @@ const state = {
 const mapView = new MapView(document.getElementById('map'), state, sendClick);
 // For diagnostics from the browser's console, and for the browser test (tests/web_console), which
 // computes the map point of the pixel it clicks with the view's own transform.
-window.refloc = { state, mapView };
+// timing: performance.now() [ms since navigation] of the WebSocket's open and of each frame
+// type's first arrival, to tell a slow page from a slow service.
+// poseShownMs / legendShownMs: when an OK POSE line and the map's reflector count were first drawn.
+const timing = { socketOpenMs: null, firstFrameMs: {}, poseShownMs: null, legendShownMs: null };
+window.refloc = { state, mapView, timing };
 const $ = (id) => document.getElementById(id);
 let socket = null;
 let redrawPending = false;
@@ -25,6 +29,7 @@ function redraw() {
   requestAnimationFrame(() => {
     redrawPending = false;
     mapView.draw();
+    if (timing.legendShownMs === null && state.map && state.map.reflectors.length > 0) timing.legendShownMs = performance.now();
     drawSensor($('sensor'), state);
     renderHealth($('health').tBodies[0], $('map-health'), state);
     renderLines();
@@ -37,6 +42,7 @@ function renderLines() {
     ? `POSE ${p.status} x ${p.x.toFixed(3)} y ${p.y.toFixed(3)} m θ ${(p.theta * 180 / Math.PI).toFixed(2)}° ` +
       `σxy ${(1000 * Math.sqrt(Math.max(p.covariance[0], p.covariance[4]))).toFixed(1)} mm, ${p.reflectors_used} reflectors`
     : 'no POSE yet';
+  if (timing.poseShownMs === null && p && p.status === 'OK') timing.poseShownMs = performance.now();
   const n = state.navStatus;
   $('nav-line').textContent = n
     ? `navigator ${n.state}` + (n.waypoints > 0 ? ` goal ${n.goal_id} waypoint ${n.waypoint_index + 1}/${n.waypoints}` +
@@ -89,7 +95,10 @@ const handlers = {
 
 function connect() {
   socket = new WebSocket(`ws://${location.host}/`);
-  socket.onopen = () => { $('connection').textContent = 'live'; $('connection').className = 'ok'; };
+  socket.onopen = () => {
+    if (timing.socketOpenMs === null) timing.socketOpenMs = performance.now();
+    $('connection').textContent = 'live'; $('connection').className = 'ok';
+  };
   socket.onclose = () => {
     $('connection').textContent = 'disconnected, retrying…';
     $('connection').className = 'bad';
@@ -97,6 +106,7 @@ function connect() {
   };
   socket.onmessage = (event) => {
     const frame = JSON.parse(event.data);
+    if (!(frame.type in timing.firstFrameMs)) timing.firstFrameMs[frame.type] = performance.now();
     const handle = handlers[frame.type];
     if (handle) { handle(frame); redraw(); }
   };
