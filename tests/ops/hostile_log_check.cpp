@@ -54,11 +54,17 @@ int check_poses(const LogModel& log, double max_error_m) {
   fmt::print("\n== status OK poses vs GROUND_TRUTH (max {:.3f} m)\n", max_error_m);
   fmt::print("{:<12} {:>8} {:>12} {:>10} {:>12}\n", "channel", "ok", "max err [m]", "too far", "no truth");
   for (const std::string channel : {"POSE", "LASER_POSE"}) {
-    int ok = 0, far = 0, untimed = 0;
+    int ok = 0, far = 0, untimed = 0, unjudged = 0;
     double worst = 0.0;
     std::string first;
     for (const auto& p : log.ok_poses) {
       if (p.channel != channel) continue;
+      // While `refloc stop` ends the programs one by one, robot_sim (the referee) may go first:
+      // a pose stamped after its last GROUND_TRUTH is counted and printed, not judged.
+      if (log.outside_truth_span(p)) {
+        ++unjudged;
+        continue;
+      }
       ++ok;
       const auto error = log.truth_error_m(p);
       if (!error) ++untimed;
@@ -70,6 +76,9 @@ int check_poses(const LogModel& log, double max_error_m) {
                             error ? fmt::format("{:.3f} m off", *error) : "no GROUND_TRUTH at that stamp");
     }
     fmt::print("{:<12} {:>8} {:>12.4f} {:>10} {:>12}\n", channel, ok, worst, far, untimed);
+    if (unjudged > 0)
+      fmt::print("{:<12} {} OK poses stamped before the first or after the last GROUND_TRUTH: not judged\n",
+                 channel, unjudged);
     if (far + untimed > 0) {
       fmt::print("FAIL pose {}: {} OK poses too far, {} stamped where there is no truth; first {}\n", channel,
                  far, untimed, first);

@@ -89,6 +89,11 @@ struct LogModel {
   std::string phase_at(int64_t utime) const;
   /// Distance of p from GROUND_TRUTH interpolated at p.utime; none without truth within 50 ms.
   std::optional<double> truth_error_m(const OkPose& p) const;
+  /// p is stamped outside the span GROUND_TRUTH covers (robot_sim, the referee, had not started
+  /// or had already stopped: `refloc stop` ends the programs one by one), so it cannot be judged.
+  bool outside_truth_span(const OkPose& p) const {
+    return truth.empty() || p.utime < truth.front().first || p.utime > truth.back().first;
+  }
   /// decode_errors + rejection counters of service: growth over the phase's window.
   Growth rejection_growth(const std::string& service, const Phase& phase) const;
   /// Per service: the counters that grew over the whole log, "name +n" ("*": rejection counter).
