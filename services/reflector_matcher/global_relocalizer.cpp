@@ -25,6 +25,29 @@ GlobalRelocalizer::GlobalRelocalizer(const ReflectorMap& map, const MapGrid& gri
       index_(index),
       verifier_(map, grid, sensor, relocalization, occluders) {}
 
+std::array<double, 3> GlobalRelocalizer::side_tolerances(const std::vector<ReflectorDetection>& detections,
+                                                         const std::array<int, 3>& det,
+                                                         const SortedSides& s) const {
+  const double base = relocalization_.side_tolerance;
+  std::array<double, 3> tol = {base, base, base};
+  if (relocalization_.side_tolerance_sigmas <= 0.0) return tol;
+  for (size_t m = 0; m < 3; ++m) {
+    // Side m joins the two vertices other than the one opposite it.
+    const auto& a = detections[static_cast<size_t>(det[static_cast<size_t>((s.opposite[m] + 1) % 3)])];
+    const auto& b = detections[static_cast<size_t>(det[static_cast<size_t>((s.opposite[m] + 2) % 3)])];
+    const Eigen::Vector2d along = a.laser_p_center - b.laser_p_center;
+    const double length = along.norm();
+    if (length <= 0.0) continue;
+    const Eigen::Vector2d u = along / length;
+    const double variance = u.dot((a.covariance + b.covariance) * u);
+    const double widened =
+        std::sqrt(base * base + relocalization_.side_tolerance_sigmas *
+                                    relocalization_.side_tolerance_sigmas * std::max(0.0, variance));
+    tol[m] = std::min(relocalization_.max_side_tolerance, widened);
+  }
+  return tol;
+}
+
 void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection>& detections) {
   hypotheses_.clear();
   nearest_.clear();
@@ -40,7 +63,10 @@ void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection
   const double tol = relocalization_.side_tolerance;
   const double max_err2 = relocalization_.hypothesis_fit_max_error * relocalization_.hypothesis_fit_max_error;
   const size_t n = nearest_.size();
-  const auto full = [&] { return static_cast<int>(hypotheses_.size()) >= relocalization_.max_hypotheses; };
+  // The cap counts the poses that may win; those only the widened tolerance found have a cap of
+  // their own, so that they never crowd out the strict lookups of later triangles.
+  int may_win = 0, rivals_only = 0;
+  const auto full = [&] { return may_win >= relocalization_.max_hypotheses; };
   for (size_t i = 0; i < n && !full(); ++i) {
     for (size_t j = i + 1; j < n && !full(); ++j) {
       for (size_t k = j + 1; k < n && !full(); ++k) {
@@ -51,16 +77,19 @@ void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection
             detections[static_cast<size_t>(det[2])].laser_p_center};
         const SortedSides s = sorted_sides(laser_p);
         if (s.side[0] < relocalization_.min_triangle_side - tol) continue;
-        index_.for_each_candidate(s.side, [&](const IndexedTriangle& tri) {
+        const std::array<double, 3> side_tol = side_tolerances(detections, det, s);
+        index_.for_each_candidate(s.side, side_tol, [&](const IndexedTriangle& tri) {
           // Sorted order fixes the correspondence unless sides are nearly equal (isosceles):
           // try every vertex assignment whose sides agree, and let the rigid fit decide
           // (a mirrored assignment cannot fit a rotation).
           for (const auto& perm : kPermutations) {
             if (full()) return;
-            bool sides_agree = true;
+            bool sides_agree = true, within_fixed = true;
             for (int m = 0; m < 3 && sides_agree; ++m) {
-              sides_agree = std::abs(s.side[static_cast<size_t>(m)] -
-                                     tri.side[static_cast<size_t>(perm[static_cast<size_t>(m)])]) <= tol;
+              const double error = std::abs(s.side[static_cast<size_t>(m)] -
+                                            tri.side[static_cast<size_t>(perm[static_cast<size_t>(m)])]);
+              sides_agree = error <= side_tol[static_cast<size_t>(m)];
+              within_fixed = within_fixed && error <= tol;
             }
             if (!sides_agree) continue;
             RigidFit2d fit;
@@ -77,7 +106,12 @@ void GlobalRelocalizer::generate_hypotheses(const std::vector<ReflectorDetection
               fits = (map_T_laser * laser_p[static_cast<size_t>(s.opposite[m])] - map_p[m]).squaredNorm() <=
                      max_err2;
             }
-            if (fits) hypotheses_.push_back(map_T_laser);
+            if (!fits || (!within_fixed && rivals_only >= relocalization_.max_hypotheses)) continue;
+            hypotheses_.push_back({map_T_laser, within_fixed});
+            if (within_fixed)
+              ++may_win;
+            else
+              ++rivals_only;
           }
         });
       }
@@ -91,7 +125,7 @@ void GlobalRelocalizer::remove_duplicate_hypotheses() {
   constexpr double kBinXy = 0.05, kBinTheta = 0.5 * M_PI / 180.0;
   keyed_.clear();
   for (size_t i = 0; i < hypotheses_.size(); ++i) {
-    const Pose2& h = hypotheses_[i];
+    const Pose2& h = hypotheses_[i].map_T_laser;
     const auto bin = [](double v, double width) {
       return static_cast<uint64_t>(std::llround(v / width) & 0x1FFFFF);
     };
@@ -100,7 +134,11 @@ void GlobalRelocalizer::remove_duplicate_hypotheses() {
   std::sort(keyed_.begin(), keyed_.end());
   unique_.clear();
   for (size_t k = 0; k < keyed_.size(); ++k) {
-    if (k == 0 || keyed_[k].first != keyed_[k - 1].first) unique_.push_back(hypotheses_[keyed_[k].second]);
+    const Hypothesis& h = hypotheses_[keyed_[k].second];
+    if (k == 0 || keyed_[k].first != keyed_[k - 1].first)
+      unique_.push_back(h);
+    else
+      unique_.back().may_win = unique_.back().may_win || h.may_win;  // one strict triangle suffices
   }
   hypotheses_.swap(unique_);
 }
@@ -123,17 +161,19 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   double best_score = -1e300;
   int best_matched = 0;
   Pose2 best_pose;
-  for (const Pose2& h : hypotheses_) {
-    const Verification v = verifier_.verify(h, detections);
+  bool any_may_win = false;
+  for (const Hypothesis& h : hypotheses_) {
+    const Verification v = verifier_.verify(h.map_T_laser, detections);
     scored_.push_back({v.map_T_laser, v.score, v.matched});
-    if (v.score > best_score) {
+    if (h.may_win && v.score > best_score) {
+      any_may_win = true;
       best_score = v.score;
       best_matched = v.matched;
       best_pose = v.map_T_laser;
       best_associations_ = verifier_.associations();
     }
   }
-  if (scored_.empty()) return;
+  if (!any_may_win) return;
 
   // A substantially different pose rivals the best when it scores nearly as well, or when it
   // explains as many detections and loses only on a few unseen reflectors: unmapped racks

@@ -10,10 +10,12 @@
 #include "reflector_matcher/map_triangle_index.hpp"
 #include "reflector_matcher/match_result.hpp"
 #include "reflector_matcher/matcher_config.hpp"
+#include "reflector_matcher/triangle_signature.hpp"
 
 #include "common/reflector_detection.hpp"
 #include "common/reflector_map.hpp"
 
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -42,12 +44,25 @@ class GlobalRelocalizer {
                    MatchResult& result);
 
  private:
+  /// A pose from a triangle lookup. may_win: some triangle proposed it within the fixed
+  /// side_tolerance; one found only through the tolerance its detections' covariances widen can
+  /// make the scan AMBIGUOUS as a rival but is never the answer itself: a looser lookup is
+  /// evidence enough to doubt a pose, not to assert one (without occluders, letting it win
+  /// raised the wrong fixes from scratch from 4 to 14 per 200,000 demo-hall scans).
+  struct Hypothesis {
+    Pose2 map_T_laser;
+    bool may_win = true;
+  };
   struct Scored {
     Pose2 map_T_laser;
     double score;
     int matched;
   };
   void generate_hypotheses(const std::vector<ReflectorDetection>& detections);
+  /// Per sorted side of the triangle of detections det: side_tolerance, widened by the side's
+  /// own standard deviation (relocalization.side_tolerance_sigmas), capped.
+  std::array<double, 3> side_tolerances(const std::vector<ReflectorDetection>& detections,
+                                        const std::array<int, 3>& det, const SortedSides& s) const;
   void remove_duplicate_hypotheses();
   bool explains_enough(int matched, double score, size_t ndetections) const;
   void fill_matches(MatchResult& result) const;  ///< from best_associations_
@@ -58,8 +73,8 @@ class GlobalRelocalizer {
   const MapTriangleIndex& index_;
   HypothesisVerifier verifier_;
   std::vector<int> nearest_;  ///< detection indices used for triples, nearest first
-  std::vector<Pose2> hypotheses_;
-  std::vector<Pose2> unique_;
+  std::vector<Hypothesis> hypotheses_;
+  std::vector<Hypothesis> unique_;
   std::vector<std::pair<uint64_t, size_t>> keyed_;
   std::vector<Scored> scored_;
   std::vector<Association> best_associations_;

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace refloc {
@@ -34,7 +35,14 @@ class MapTriangleIndex {
   /// Calls fn(const IndexedTriangle&) for every indexed triangle whose sorted sides are all within
   /// the tolerance of sides (ascending) [m].
   template <class Fn>
-  void for_each_candidate(const std::array<double, 3>& sides, Fn&& fn) const;
+  void for_each_candidate(const std::array<double, 3>& sides, Fn&& fn) const {
+    for_each_candidate(sides, {tolerance_, tolerance_, tolerance_}, std::forward<Fn>(fn));
+  }
+  /// The same with a tolerance per side (for sides[k], tolerances[k] [m]; any width, though
+  /// one far above the index's own visits many cells).
+  template <class Fn>
+  void for_each_candidate(const std::array<double, 3>& sides, const std::array<double, 3>& tolerances,
+                          Fn&& fn) const;
 
   size_t size() const { return triangles_.size(); }
   /// Every indexed triangle (ordered by cell, not by reflector).
@@ -53,13 +61,15 @@ class MapTriangleIndex {
 };
 
 template <class Fn>
-void MapTriangleIndex::for_each_candidate(const std::array<double, 3>& sides, Fn&& fn) const {
-  if (sides[2] > max_side_ + tolerance_) return;
-  // A cell is twice the tolerance wide, so each side's interval touches at most two cells.
+void MapTriangleIndex::for_each_candidate(const std::array<double, 3>& sides,
+                                          const std::array<double, 3>& tolerances, Fn&& fn) const {
+  if (sides[2] > max_side_ + tolerances[2]) return;
+  // A cell is twice the index's tolerance wide: a side's interval at that tolerance touches at
+  // most two cells, a wider one a few more.
   int lo[3], hi[3];
   for (int k = 0; k < 3; ++k) {
-    lo[k] = cell(std::max(0.0, sides[k] - tolerance_));
-    hi[k] = cell(sides[k] + tolerance_);
+    lo[k] = cell(std::max(0.0, sides[k] - tolerances[k]));
+    hi[k] = cell(sides[k] + tolerances[k]);
   }
   for (int a = lo[0]; a <= hi[0]; ++a) {
     for (int b = lo[1]; b <= hi[1]; ++b) {
@@ -68,9 +78,9 @@ void MapTriangleIndex::for_each_candidate(const std::array<double, 3>& sides, Fn
         if (it == cells_.end()) continue;
         for (uint32_t t = it->second.first; t < it->second.second; ++t) {
           const IndexedTriangle& tri = triangles_[t];
-          if (std::abs(tri.side[0] - sides[0]) <= tolerance_ &&
-              std::abs(tri.side[1] - sides[1]) <= tolerance_ &&
-              std::abs(tri.side[2] - sides[2]) <= tolerance_) {
+          if (std::abs(tri.side[0] - sides[0]) <= tolerances[0] &&
+              std::abs(tri.side[1] - sides[1]) <= tolerances[1] &&
+              std::abs(tri.side[2] - sides[2]) <= tolerances[2]) {
             fn(tri);
           }
         }

@@ -52,8 +52,18 @@ struct RelocalizationConfig {
   double min_triangle_side = 0.3;     ///< min_triangle_side_m: shorter sides give poor headings [m]
   double max_triangle_side = 40.0;    ///< max_triangle_side_m: triangles a scan can see, 2 * max range [m]
   int max_index_triangles = 5000000;  ///< cap on the index size; max_triangle_side shrinks to meet it
-  int max_triple_detections = 20;     ///< only the nearest N detections form triples
-  int max_hypotheses = 4000;          ///< per scan, bounds the relocalization time
+  /// side_tolerance_sigmas: a scan triangle's side also agrees with a map side within this many
+  /// of its own standard deviations (its two detections' covariances along it), added to
+  /// side_tolerance in quadrature. Far 2-beam detections are 10-20 mm uncertain across the beam:
+  /// the true triangle once missed the fixed 80 mm by 0.5 mm while a wrong one 10 m away fitted,
+  /// and that scan published a wrong fix from scratch. A pose found only through the wider
+  /// tolerance is a rival (AMBIGUOUS), never the answer. 0 = side_tolerance alone [-].
+  double side_tolerance_sigmas = 2.0;
+  double max_side_tolerance = 0.16;  ///< max_side_tolerance_m: cap on that wider tolerance (cost) [m]
+  int max_triple_detections = 20;    ///< only the nearest N detections form triples
+  /// per scan, bounds the relocalization time; the rivals only the widened tolerance finds have
+  /// a cap of the same size of their own
+  int max_hypotheses = 4000;
   double hypothesis_fit_max_error = 0.15;  ///< _m: a triangle whose rigid fit is worse is no hypothesis [m]
   double verify_coarse_gate = 0.5;         ///< verify_coarse_gate_m: first association of a hypothesis [m]
   double verify_fine_gate = 0.15;  ///< verify_fine_gate_m: after refitting with all coarse matches [m]

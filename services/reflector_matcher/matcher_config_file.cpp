@@ -126,6 +126,19 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
                                                    "per sorted side when looking a detection triangle up in "
                                                    "the map index; larger: more candidates, slower"},
                                                   m.relocalization.side_tolerance, 0.001, 2.0);
+  m.relocalization.side_tolerance_sigmas =
+      config.number({"/relocalization/side_tolerance_sigmas", "-",
+                     "a side also agrees within this many of its own standard deviations (its two "
+                     "detections' covariances along it), added to side_tolerance_m in quadrature; a pose "
+                     "found only so is a rival (AMBIGUOUS), never the answer; 0: side_tolerance_m alone"},
+                    m.relocalization.side_tolerance_sigmas, 0.0, 10.0);
+  m.relocalization.max_side_tolerance =
+      config.number({"/relocalization/max_side_tolerance_m", "m",
+                     "cap on the tolerance side_tolerance_sigmas widens (bounds the lookup's cost)"},
+                    m.relocalization.max_side_tolerance, 0.001, 2.0);
+  if (m.relocalization.max_side_tolerance < m.relocalization.side_tolerance) {
+    config.fail("/relocalization/max_side_tolerance_m", "must be at least /relocalization/side_tolerance_m");
+  }
   m.relocalization.min_triangle_side =
       config.number({"/relocalization/min_triangle_side_m", "m",
                      "triangles with a shorter side are not used for relocalization (poor heading)"},
@@ -148,10 +161,11 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
       config.integer({"/relocalization/max_triple_detections", "count",
                       "only the nearest N detections form triangles (N(N-1)(N-2)/6 looked up per scan)"},
                      m.relocalization.max_triple_detections, 3, 100));
-  m.relocalization.max_hypotheses =
-      static_cast<int>(config.integer({"/relocalization/max_hypotheses", "count",
-                                       "pose hypotheses per scan at most: bounds the relocalization time"},
-                                      m.relocalization.max_hypotheses, 1, 10000000));
+  m.relocalization.max_hypotheses = static_cast<int>(
+      config.integer({"/relocalization/max_hypotheses", "count",
+                      "pose hypotheses per scan at most: bounds the relocalization time (the "
+                      "rivals only side_tolerance_sigmas finds: as many again)"},
+                     m.relocalization.max_hypotheses, 1, 10000000));
   m.relocalization.hypothesis_fit_max_error = config.number(
       {"/relocalization/hypothesis_fit_max_error_m", "m",
        "a triangle whose rigid fit onto the map triangle leaves a larger error is no hypothesis"},

@@ -142,5 +142,53 @@ TEST(GlobalRelocalization, DetectionsFromNowhereAreLost) {
   EXPECT_LE(ok, 2);  // random points rarely look like five map reflectors
 }
 
+// Demo hall, refloc-eval random scan 113795: two far 2-beam detections 38-43 mm off across the
+// beam made the true triangle's longest side 80.5 mm short of the map's, just outside the fixed
+// 80 mm tolerance, while a look-alike triangle 10 m away fitted: the scan published a wrong fix.
+// The tolerance now widens with the detections' own covariances, for rivals only: a pose found
+// only that way makes the scan AMBIGUOUS, it is never the answer.
+TEST(GlobalRelocalization, AnUncertainTriangleFoundOnlyByItsWidenedToleranceIsARivalNotTheAnswer) {
+  const std::vector<Eigen::Vector2d> true_triangle = {{0.0, 0.0}, {4.0, 0.0}, {1.0, 5.0}};
+  const Pose2 truth{1.5, 1.5, -0.35};  // all three within the 270 deg field of view
+  std::vector<ReflectorDetection> detections;
+  for (const auto& p : true_triangle) {
+    ReflectorDetection d;
+    d.laser_p_center = truth.inverse() * p;
+    d.covariance = Eigen::Matrix2d::Identity() * 0.04 * 0.04;  // far 2-beam detections, all three
+    detections.push_back(d);
+  }
+  // The third detection 0.1 m off along the side from the first: that side reads 0.1 m long.
+  const Eigen::Vector2d along = (detections[2].laser_p_center - detections[0].laser_p_center).normalized();
+  detections[2].laser_p_center += 0.1 * along;
+  // Elsewhere (30 m away, out of the true pose's sight) a look-alike: exactly the triangle the
+  // detections form, the one a single scan cannot tell from the true one.
+  const Pose2 look_alike_pose{31.5, 1.5, -0.35};
+  std::vector<Eigen::Vector2d> points = true_triangle;
+  for (const auto& d : detections) points.push_back(look_alike_pose * d.laser_p_center);
+  const ReflectorMap map = testing::map_from_points(points);
+
+  MatcherConfig fixed;
+  fixed.relocalization.side_tolerance_sigmas = 0.0;
+  ReflectorMatcher fixed_tolerance(map, fixed);
+  MatchResult result;
+  fixed_tolerance.match(detections, nullptr, result);
+  ASSERT_EQ(result.status, MatchStatus::kOk) << "the old rule: the look-alike alone is found";
+  EXPECT_NEAR(result.map_T_laser.x, look_alike_pose.x, 0.01);
+
+  ReflectorMatcher widened(map, MatcherConfig{});  // sqrt(0.08^2 + (2 x 0.057)^2) = 0.139 m
+  widened.match(detections, nullptr, result);
+  EXPECT_EQ(result.status, MatchStatus::kAmbiguous);
+  EXPECT_NEAR(result.map_T_laser.x, look_alike_pose.x, 0.01) << "the strict match stays the best";
+  EXPECT_LT(std::hypot(result.runner_up_map_T_laser.x - truth.x, result.runner_up_map_T_laser.y - truth.y),
+            0.1)
+      << "the true pose is its rival";
+
+  // Without the look-alike the true pose, found only through the widened tolerance, is no fix.
+  const ReflectorMap alone = testing::map_from_points(true_triangle);
+  ReflectorMatcher alone_matcher(alone, MatcherConfig{});
+  alone_matcher.match(detections, nullptr, result);
+  EXPECT_NE(result.status, MatchStatus::kOk);
+}
+
 }  // namespace REFLOC_UNITY_ID
 }  // namespace refloc

@@ -54,6 +54,16 @@ TEST(MatcherConfigFile, ErrorsNameTheKey) {
   }
   EXPECT_THROW(parse_matcher_service_config(doc(R"({"sensor": {"min_range_m": 30}})"), ""), ConfigError);
   EXPECT_THROW(parse_matcher_service_config(doc(R"({"mode": "fast"})"), ""), ConfigError);
+  try {
+    parse_matcher_service_config(
+        doc(R"({"relocalization": {"side_tolerance_m": 0.1, "max_side_tolerance_m": 0.05}})"), "");
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("/relocalization/max_side_tolerance_m"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(parse_matcher_service_config(doc(R"({"relocalization": {"side_tolerance_sigmas": -1}})"), ""),
+               ConfigError);
   const JsonConfig misspelt = doc(R"({"prior_max_age": 0.5})");
   parse_matcher_service_config(misspelt, "");
   EXPECT_THROW(misspelt.reject_unknown_keys(), ConfigError);
