@@ -43,7 +43,7 @@ std::array<double, 3> GlobalRelocalizer::side_tolerances(const std::vector<Refle
     const double widened =
         std::sqrt(base * base + relocalization_.side_tolerance_sigmas *
                                     relocalization_.side_tolerance_sigmas * std::max(0.0, variance));
-    tol[m] = std::min(relocalization_.max_side_tolerance, widened);
+    tol[m] = std::max(base, std::min(relocalization_.max_side_tolerance, widened));  // never below base
   }
   return tol;
 }
