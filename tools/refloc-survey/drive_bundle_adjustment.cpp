@@ -2,6 +2,7 @@
 
 #include "drive_bundle_residuals.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -26,11 +27,14 @@ class Bundle {
   }
 
   void build() {
-    for (const BundleObservation& z : p_.observations) {
+    const std::vector<double> weights = same_view_weights();
+    for (size_t i = 0; i < p_.observations.size(); ++i) {
+      const BundleObservation& z = p_.observations[i];
       auto* f =
           new ceres::AutoDiffCostFunction<PointResidual, 2, 3, 2, 1>(new PointResidual(point_residual(z)));
-      problem_.AddResidualBlock(f, new ceres::HuberLoss(o_.huber_scale), pose(z.pose), landmark(z.landmark),
-                                &bias_);
+      ceres::LossFunction* loss = new ceres::HuberLoss(o_.huber_scale);
+      if (weights[i] < 1.0) loss = new ceres::ScaledLoss(loss, weights[i], ceres::TAKE_OWNERSHIP);
+      problem_.AddResidualBlock(f, loss, pose(z.pose), landmark(z.landmark), &bias_);
     }
     for (size_t k = 1; k < poses_.size(); ++k) {
       const Pose2 measured = p_.odom_T_robot[k - 1].inverse() * p_.odom_T_robot[k];
@@ -86,6 +90,44 @@ class Bundle {
  private:
   double* pose(int i) { return poses_[static_cast<size_t>(i)].data(); }
   double* landmark(int i) { return landmarks_[static_cast<size_t>(i)].data(); }
+
+  /// Per observation, 1 / (detections in its run of the same view of its landmark): see
+  /// BundleOptions::same_view_beam_steps. Views are predicted from the initial poses and
+  /// landmarks, not from the measurements, whose noise would split a standstill into runs.
+  std::vector<double> same_view_weights() const {
+    std::vector<double> weights(p_.observations.size(), 1.0);
+    const double same_bearing = o_.same_view_beam_steps * p_.angle_increment;
+    if (same_bearing <= 0.0) return weights;
+    std::vector<size_t> order(p_.observations.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      const BundleObservation &za = p_.observations[a], &zb = p_.observations[b];
+      return za.landmark != zb.landmark ? za.landmark < zb.landmark : za.pose < zb.pose;
+    });
+    size_t run_begin = 0;
+    double run_bearing = 0.0, run_range = 0.0;
+    const auto close_run = [&](size_t end) {
+      for (size_t k = run_begin; k < end; ++k) weights[order[k]] = 1.0 / static_cast<double>(end - run_begin);
+    };
+    for (size_t k = 0; k < order.size(); ++k) {
+      const BundleObservation& z = p_.observations[order[k]];
+      const Pose2 map_T_laser = p_.map_T_robot[static_cast<size_t>(z.pose)] * p_.robot_T_laser;
+      const Eigen::Vector2d laser_p =
+          map_T_laser.inverse() * p_.map_p_landmark[static_cast<size_t>(z.landmark)];
+      const double bearing = std::atan2(laser_p.y(), laser_p.x()), range = laser_p.norm();
+      const bool same_run = k > run_begin && p_.observations[order[run_begin]].landmark == z.landmark &&
+                            std::abs(std::remainder(bearing - run_bearing, 2.0 * M_PI)) < same_bearing &&
+                            std::abs(range - run_range) < o_.same_view_range_m;
+      if (!same_run) {
+        close_run(k);
+        run_begin = k;
+        run_bearing = bearing;
+        run_range = range;
+      }
+    }
+    close_run(order.size());
+    return weights;
+  }
 
   PointResidual point_residual(const BundleObservation& z) const {
     Eigen::Matrix2d covariance = z.covariance;

@@ -15,6 +15,8 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+
 #include <string>
 #include <vector>
 
@@ -43,6 +45,7 @@ struct BundleProblem {
   std::vector<BundleAnchor> anchors;  ///< empty: the first pose is held instead
   Pose2 robot_T_laser;
   OdometryNoise odometry_noise;
+  double angle_increment = 0.0;  ///< the scans' beam step (the coarsest) [rad]
 };
 
 struct BundleOptions {
@@ -53,6 +56,14 @@ struct BundleOptions {
   /// each other with infinite weight [m], [rad].
   double odometry_min_sigma_m = 2e-4;
   double odometry_min_sigma_rad = 2e-4;
+  /// Detections of one landmark from nearly the same view share their errors (a robot standing
+  /// still sees the reflector between the same beams scan after scan: the across-beam
+  /// quantization of a 2-3 beam fit repeats exactly), so each run of views whose predicted
+  /// bearing stays within this many of the scans' beam steps of the run's first, and range
+  /// within same_view_range_m, weighs as one detection together. 0 = every detection
+  /// independent [beam steps].
+  double same_view_beam_steps = 0.5;
+  double same_view_range_m = 0.05;  ///< see same_view_beam_steps [m]
   int max_iterations = 100;
   int threads = 2;
   bool compute_covariance = true;

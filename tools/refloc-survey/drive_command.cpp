@@ -143,6 +143,15 @@ CLI::App* add_drive_command(CLI::App& app, DriveCommandOptions& o) {
               "extract exactly as the service does; by default the survey models the wall behind a "
               "reflector and removes the centre fit's second-order bias, which a map's long averages "
               "need (README)");
+  c->add_option("--same-view-steps", o.same_view_beam_steps,
+                "detections of a reflector whose bearing stays within this many of the scan's beam steps "
+                "of a run's first (and range within --same-view-range-m) weigh as one: a standing robot "
+                "repeats the same beams' errors; 0: every detection independent")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 10.0));
+  c->add_option("--same-view-range-m", o.same_view_range_m, "see --same-view-steps")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 10.0));
   return c;
 }
 
@@ -162,6 +171,8 @@ int run_drive_command(const DriveCommandOptions& o) {
 
   DriveSurveyConfig config;
   config.bundle.estimate_range_bias = o.estimate_range_bias;
+  config.bundle.same_view_beam_steps = o.same_view_beam_steps;
+  config.bundle.same_view_range_m = o.same_view_range_m;
   const Pose2 start_pose{o.start_pose[0], o.start_pose[1], o.start_pose[2]};
   const DriveSurveyResult survey =
       run_drive_survey(scans, robot.robot_T_laser, robot.odometry_noise, start_pose, anchors, config);

@@ -28,7 +28,10 @@ struct DriveCommandOptions {
   bool estimate_range_bias = true;
   /// Extract with mapping_corrections() (the wall behind, the fit's second-order bias).
   bool mapping_corrections = true;
-  bool force = false;  ///< replace an existing out_path
+  /// BundleOptions::same_view_beam_steps (0: every detection independent) [beam steps].
+  double same_view_beam_steps = 0.5;
+  double same_view_range_m = 0.05;  ///< BundleOptions::same_view_range_m [m]
+  bool force = false;               ///< replace an existing out_path
 };
 
 struct CompareCommandOptions {

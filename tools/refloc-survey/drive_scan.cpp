@@ -32,6 +32,7 @@ void DriveScanBuilder::on_scan(const LaserScan& scan) {
   }
   DriveScan s;
   s.utime = out.utime;
+  s.angle_increment = std::abs(scan.angle_increment);
   s.detections = out.detections;
   keep_diffuse(scan, out.detections, s);
   scans_.push_back(std::move(s));

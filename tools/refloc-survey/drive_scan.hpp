@@ -21,8 +21,9 @@ namespace refloc {
 
 /// One scan of a survey drive, everything in the laser frame at the scan's first-beam time.
 struct DriveScan {
-  int64_t utime = 0;   ///< first beam [us]
-  Pose2 odom_T_robot;  ///< odometry at utime, interpolated [m, m, rad]
+  int64_t utime = 0;             ///< first beam [us]
+  Pose2 odom_T_robot;            ///< odometry at utime, interpolated [m, m, rad]
+  double angle_increment = 0.0;  ///< the scan's beam step [rad]
   std::vector<ReflectorDetection> detections;
   /// Echoes below the extractor's energy threshold (walls, racks), each moved to utime with
   /// the odometry twist like the detections [m]; every diffuse_stride-th beam.

@@ -22,6 +22,7 @@ BundleProblem make_problem(const std::vector<DriveScan>& scans, const TrackerRes
   p.robot_T_laser = robot_T_laser;
   p.odometry_noise = noise;
   for (size_t k = 0; k < scans.size(); ++k) {
+    p.angle_increment = std::max(p.angle_increment, scans[k].angle_increment);
     p.map_T_robot.push_back(front.scans[k].map_T_robot);
     p.odom_T_robot.push_back(scans[k].odom_T_robot);
     for (size_t d = 0; d < scans[k].detections.size(); ++d) {

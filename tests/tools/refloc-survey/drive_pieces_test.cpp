@@ -94,6 +94,38 @@ TEST(BundleAdjustment, AnchorsHoldTheirLandmarksAndFreeTheFirstPose) {
   EXPECT_LT((r.landmarks[4].map_p - (truth[4] - Eigen::Vector2d(0.05, -0.04))).norm(), 1e-6);
 }
 
+TEST(BundleAdjustment, ARobotStandingStillWeighsAsOneViewNotAsEveryScan) {
+  // The synthetic drive, then 200 scans standing at its last pose whose detections of landmark
+  // 0 all sit 20 mm across the beam: a 2-beam fit between the same two beams repeats its error
+  // scan after scan. As 200 independent detections they would outweigh the 40 good views.
+  BundleProblem p = synthetic_problem(0.0);
+  p.angle_increment = 0.5 * M_PI / 180.0;
+  const std::vector<Eigen::Vector2d> truth = synthetic_problem(0.0).map_p_landmark;
+  const Pose2 standing = p.odom_T_robot.back();
+  const Pose2 laser_T_map = (standing * p.robot_T_laser).inverse();
+  for (int k = 0; k < 200; ++k) {
+    const int pose = static_cast<int>(p.map_T_robot.size());
+    p.odom_T_robot.push_back(standing);
+    p.map_T_robot.push_back(p.map_T_robot.back());
+    for (size_t j = 0; j < truth.size(); ++j) {
+      const Eigen::Vector2d laser_p = laser_T_map * (truth[j] - Eigen::Vector2d(0.05, -0.04));
+      const Eigen::Vector2d across(-laser_p.normalized().y(), laser_p.normalized().x());
+      p.observations.push_back({pose, static_cast<int>(j), 0, laser_p + (j == 0 ? 0.02 : 0.0) * across,
+                                Eigen::Matrix2d::Identity() * 1e-4});
+    }
+  }
+  const auto error_of_landmark_0 = [&](double same_view_beam_steps) {
+    BundleOptions o;
+    o.estimate_range_bias = false;
+    o.same_view_beam_steps = same_view_beam_steps;
+    const BundleResult r = adjust_bundle(p, o);
+    EXPECT_TRUE(r.ok) << r.message;
+    return (r.landmarks[0].map_p - (truth[0] - Eigen::Vector2d(0.05, -0.04))).norm();
+  };
+  EXPECT_LT(error_of_landmark_0(0.5), 0.0015);  // 0.3 mm: the standstill weighs as one of 41 views
+  EXPECT_GT(error_of_landmark_0(0.0), 0.008);   // 10.6 mm: every scan counted, pulled half the way
+}
+
 TEST(Occluders, TwoWallsOfCellsBecomeTwoSegmentsWithTheirEnds) {
   std::vector<Eigen::Vector2d> cells;
   for (int i = 0; i < 100; ++i) cells.emplace_back(0.025 + 0.05 * i, 0.025);     // 5 m along x
