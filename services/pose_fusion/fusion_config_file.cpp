@@ -40,6 +40,16 @@ FusionServiceConfig parse_fusion_service_config(const JsonConfig& config) {
                       "this many gated-out fixes in a row: LOST, re-initialised from the next OK fix; lower "
                       "recovers sooner from a wrong estimate, trusts wrong fixes sooner"},
                      f.max_consecutive_rejections, 1, 100000));
+  f.start_agreeing_usable_fixes = static_cast<int>(config.integer(
+      {"/fusion/start_agreeing_degraded_fixes", "count",
+       "with no OK LASER_POSE to start (or restart) from, this many DEGRADED ones (3 reflectors) within "
+       "start_window_s that agree through the odometry (gate_chi2) start the filter: a pose_fusion restarted "
+       "where the laser sees 3 reflectors; 0: only an OK fix starts it"},
+      f.start_agreeing_usable_fixes, 0, 1000));
+  f.start_window =
+      config.number({"/fusion/start_window_s", "s",
+                     "how far back the agreeing DEGRADED fixes of start_agreeing_degraded_fixes reach"},
+                    f.start_window, 0.1, 600.0);
   const std::string measurements = config.choice(
       {"/measurements", "",
        "what corrects odometry: \"detections\" (each matched reflector of REFLECTOR_MATCHES at its scan's "

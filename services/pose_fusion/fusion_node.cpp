@@ -291,9 +291,17 @@ std::optional<FusionOutput> FusionNode::on_fix(const LaserFixInput& input, int64
     reflectors_used_ = input.reflectors_used;
   if (result == FixResult::kInitialised) {
     const Pose2& p = input.map_T_robot;
-    event(nullptr, NodeEvent::Level::kInfo,
-          fmt::format("initialised from the fix at utime {}: ({:.3f}, {:.3f}, {:.4f})", input.utime, p.x, p.y,
-                      p.theta));
+    if (fusion_.start_agreeing_fixes() > 0) {
+      event("initialisations_from_degraded_fixes", NodeEvent::Level::kWarn,
+            fmt::format(
+                "initialised from {} agreeing DEGRADED fixes over {:.2f} s (no OK fix: fewer than the "
+                "solver's reflectors for OK in view), the last at utime {}: ({:.3f}, {:.3f}, {:.4f})",
+                fusion_.start_agreeing_fixes(), fusion_.start_span_s(), input.utime, p.x, p.y, p.theta));
+    } else {
+      event(nullptr, NodeEvent::Level::kInfo,
+            fmt::format("initialised from the fix at utime {}: ({:.3f}, {:.3f}, {:.4f})", input.utime, p.x,
+                        p.y, p.theta));
+    }
   }
   return out;
 }
@@ -342,7 +350,8 @@ void FusionNode::on_matches(const MatchesInput& input, int64_t now_mono_us, int6
                         result.rejected, result.rejected + result.accepted));
       break;
     case FixResult::kWaitingForGood:
-      event("scans_waiting_for_fix");  // the filter starts from the solver's next OK fix
+      event("scans_waiting_for_fix");  // the filter starts from the solver's next OK fix, or agreeing
+                                       // DEGRADED ones
       break;
     case FixResult::kAheadOfOdometry:
       reject("rejected_matches_ahead_of_odometry",

@@ -3,6 +3,7 @@
 // and one status rule.
 #include "pose_fusion/pose_fusion.hpp"
 
+#include "common/covariance_propagation.hpp"
 #include "common/se2.hpp"
 
 #include <algorithm>
@@ -43,7 +44,8 @@ void set_model_prior(FusionState& state, const FusionModel& model) {
 
 }  // namespace
 
-PoseFusion::PoseFusion(const FusionConfig& config) : config_(config) {
+PoseFusion::PoseFusion(const FusionConfig& config)
+    : config_(config), agreement_(config.start_agreeing_usable_fixes, config.start_window, config.gate_chi2) {
   const FusionModel& m = config.model;
   walk_.range_bias_m_per_sqrt_s = m.estimate_range_bias ? m.range_bias_drift_m_per_sqrt_s : 0.0;
   walk_.odometry_error_per_sqrt_m = m.estimate_odometry_error ? m.odometry_error_walk_per_sqrt_m : 0.0;
@@ -93,6 +95,7 @@ bool PoseFusion::add_odometry(int64_t utime, const Pose2& delta, const Eigen::Ma
   step.posterior = state();
   ekf_predict(step.posterior, delta, q, static_cast<double>(utime - start) * 1e-6, walk_);
   steps_.push_back(std::move(step));
+  agreement_.add_odometry(delta, q);
   trim_history();
   apply_deferred_fixes();
   return true;
@@ -195,6 +198,18 @@ long PoseFusion::step_ending_at(int64_t t) {
   return static_cast<long>(i);
 }
 
+std::pair<Pose2, Eigen::Matrix3d> PoseFusion::carried_to_latest(const PoseFix& fix) {
+  Pose2 pose = fix.map_T_robot;
+  Eigen::Matrix3d covariance = fix.covariance;
+  if (steps_.empty() || fix.utime >= utime()) return {pose, covariance};
+  const long i = step_ending_at(std::max(fix.utime, base_utime_));
+  for (size_t j = static_cast<size_t>(i + 1); j < steps_.size(); ++j) {
+    covariance = compose_covariance(pose, covariance, steps_[j].delta, steps_[j].q);
+    pose = pose * steps_[j].delta;
+  }
+  return {pose, covariance};
+}
+
 void PoseFusion::initialise(const PoseFix& fix) {
   // Everything before the fix is forgotten: the fix becomes the base and the
   // odometry after it is re-applied. A fix newer than the latest odometry is
@@ -261,7 +276,15 @@ FixResult PoseFusion::add_fix(const PoseFix& fix) {
   // Lost is judged at the odometry's time, never at the fix's: a fix cannot declare
   // the filter lost by its own stamp.
   if (!initialised_ || lost(utime())) {
-    if (fix.quality != FixQuality::kGood) return FixResult::kWaitingForGood;
+    start_agreeing_fixes_ = 0;
+    start_span_s_ = 0.0;
+    if (fix.quality != FixQuality::kGood) {
+      const auto [pose_now, covariance_now] = carried_to_latest(fix);
+      if (!agreement_.offer(fix.utime, pose_now, covariance_now)) return FixResult::kWaitingForGood;
+      start_agreeing_fixes_ = agreement_.last_agreeing();
+      start_span_s_ = agreement_.last_span_s();
+    }
+    agreement_.clear();
     initialise(fix);
     return FixResult::kInitialised;
   }

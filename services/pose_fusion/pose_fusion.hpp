@@ -28,6 +28,7 @@
 
 #include "common/se2.hpp"
 #include "pose_fusion/pose_ekf.hpp"
+#include "pose_fusion/usable_fix_agreement.hpp"
 
 #include <Eigen/Core>
 
@@ -73,12 +74,17 @@ struct FusionConfig {
   double degraded_after = 1.0;          ///< no accepted fix this long: DEGRADED [s]
   double lost_after = 5.0;              ///< no accepted fix this long: LOST [s]
   int max_consecutive_rejections = 10;  ///< this many gated-out fixes in a row: LOST
+  /// With no OK fix to start from, this many DEGRADED fixes (three reflectors) within
+  /// start_window that agree through the odometry (gate_chi2) start the filter; 0: OK only.
+  int start_agreeing_usable_fixes = 3;
+  double start_window = 5.0;  ///< [s]
 };
 
 enum class FusionStatus { kInitializing, kOk, kDegraded, kLost };
 
 /// How a fix may be used: kGood (solver OK) may (re-)initialise the filter,
-/// kUsable (solver DEGRADED: few reflectors) only corrects an initialised one.
+/// kUsable (solver DEGRADED: few reflectors) corrects an initialised one, and starts it only
+/// when FusionConfig::start_agreeing_usable_fixes of them agree.
 enum class FixQuality { kGood, kUsable };
 
 struct PoseFix {
@@ -140,6 +146,10 @@ class PoseFusion {
   /// Time of estimate() [us].
   int64_t utime() const;
   bool initialised() const { return initialised_; }
+  /// The last (re-)initialisation came from this many agreeing usable fixes (0: an OK fix), over
+  /// start_span_s() seconds.
+  int start_agreeing_fixes() const { return start_agreeing_fixes_; }
+  double start_span_s() const { return start_span_s_; }
   /// True once any odometry step was added (the fix time checks need it).
   bool has_odometry() const { return has_odometry_; }
   int consecutive_rejections() const { return consecutive_rejections_; }
@@ -172,6 +182,8 @@ class PoseFusion {
   };
 
   bool lost(int64_t now_utime) const;
+  /// fix's pose and covariance carried by the odometry from its time to the latest.
+  std::pair<Pose2, Eigen::Matrix3d> carried_to_latest(const PoseFix& fix);
   /// The laser's twist over step i (constant over a step) and the model's timing variance.
   ScanTiming scan_timing(long i) const;
   void initialise(const PoseFix& fix);
@@ -214,6 +226,9 @@ class PoseFusion {
   double equivalent_nis_mean_ = 2.0;  ///< moving mean of the kept detections' Mahalanobis^2 at inflation 1
   double noise_inflation_ = 1.0;
   int nis_count_ = 0;
+  UsableFixAgreement agreement_;
+  int start_agreeing_fixes_ = 0;
+  double start_span_s_ = 0.0;
 };
 
 const char* to_string(FusionStatus status);

@@ -73,12 +73,22 @@ TEST(FusionNode, UnusableFixIsCountedAndNeitherFusedNorPublished) {
   EXPECT_FALSE(node.fusion().initialised());
 }
 
-TEST(FusionNode, DegradedFixCannotStartTheFilter) {
+TEST(FusionNode, OneDegradedFixCannotStartTheFilterThreeThatAgreeDoWithAWarning) {
   FusionNode node(laser_pose_config(), OdometryNoise{});
   node.on_odometry(odometry_at(0), 0, host(odometry_at(0).utime));
   node.on_fix(fix_at(kT0, Pose2{}, FixStatus::kDegraded), 1000, host(kT0));
   EXPECT_EQ(count(node.events(), "fixes_not_good_enough_to_start"), 1);
   EXPECT_FALSE(node.fusion().initialised());
+  // Standing at a spot that shows three reflectors: two more DEGRADED fixes of the same pose.
+  node.on_odometry(odometry_at(1, 0.0), 10'000, host(odometry_at(1).utime));
+  node.on_fix(fix_at(kT0 + kPeriod, Pose2{}, FixStatus::kDegraded), 11'000, host(kT0 + kPeriod));
+  EXPECT_FALSE(node.fusion().initialised());
+  node.on_odometry(odometry_at(2, 0.0), 20'000, host(odometry_at(2).utime));
+  node.on_fix(fix_at(kT0 + 2 * kPeriod, Pose2{}, FixStatus::kDegraded), 21'000, host(kT0 + 2 * kPeriod));
+  EXPECT_TRUE(node.fusion().initialised());
+  EXPECT_EQ(count(node.events(), "initialisations_from_degraded_fixes"), 1);
+  EXPECT_TRUE(logged(node.events(), NodeEvent::Level::kWarn,
+                     "initialised from 3 agreeing DEGRADED fixes over 0.02 s"));
 }
 
 TEST(FusionNode, GoodFixInitialisesThenPoseIsOkWithItsReflectorCount) {

@@ -175,6 +175,44 @@ TEST(PoseFusion, InitialisesFromTheFirstGoodFixAndRollsItForward) {
   EXPECT_EQ(fusion.utime(), kT0 + 35 * kPeriod);
 }
 
+TEST(PoseFusion, ThreeDegradedFixesThatAgreeThroughTheOdometryStartIt) {
+  // A pose_fusion restarted where the laser sees three reflectors: only DEGRADED fixes come,
+  // each a little after its time, while the robot drives on.
+  PoseFusion fusion{FusionConfig{}};
+  int fed = 0;
+  const auto usable = [&](int k, const Pose2& pose) {
+    feed(fusion, fed + 1, k + 3);
+    fed = k + 3;
+    return fusion.add_fix(fix_at(kT0 + k * kPeriod, pose, FixQuality::kUsable));
+  };
+  EXPECT_EQ(usable(100, truth_at(kT0 + 100 * kPeriod)), FixResult::kWaitingForGood);
+  EXPECT_EQ(usable(150, Pose2{9.0, 9.0, 1.0}), FixResult::kWaitingForGood);           // agrees with nothing
+  EXPECT_EQ(usable(200, truth_at(kT0 + 200 * kPeriod)), FixResult::kWaitingForGood);  // 2 of 3
+  EXPECT_EQ(fusion.status(kT0 + 203 * kPeriod), FusionStatus::kInitializing);
+  EXPECT_EQ(usable(390, truth_at(kT0 + 390 * kPeriod)), FixResult::kInitialised);
+  EXPECT_EQ(fusion.start_agreeing_fixes(), 3);
+  EXPECT_NEAR(fusion.start_span_s(), 2.9, 1e-9);
+  EXPECT_TRUE(approx_equal(fusion.estimate().map_T_robot, truth_at(kT0 + 393 * kPeriod), 1e-9, 1e-9));
+  EXPECT_EQ(usable(395, truth_at(kT0 + 395 * kPeriod)), FixResult::kAccepted);  // now it corrects
+}
+
+TEST(PoseFusion, DegradedFixesThatDoNotFollowTheOdometryNeverStartIt) {
+  // The same pose reported while the robot drives away: the fixes disagree once carried along;
+  // and with start_agreeing_usable_fixes 0 even agreeing ones wait for an OK fix.
+  FusionConfig ok_only;
+  ok_only.start_agreeing_usable_fixes = 0;
+  PoseFusion fusion{FusionConfig{}}, strict{ok_only};
+  for (int k = 100; k <= 400; k += 20) {
+    feed(fusion, k - 19, k);
+    feed(strict, k - 19, k);
+    const int64_t t = kT0 + k * kPeriod;
+    EXPECT_EQ(fusion.add_fix(fix_at(t, Pose2{2.0, 1.0, 0.5}, FixQuality::kUsable)),
+              FixResult::kWaitingForGood)
+        << k;
+    EXPECT_EQ(strict.add_fix(fix_at(t, truth_at(t), FixQuality::kUsable)), FixResult::kWaitingForGood) << k;
+  }
+}
+
 TEST(PoseFusion, FixOlderThanTheHistoryIsRefused) {
   PoseFusion fusion = started();
   feed(fusion, 1, 150);  // 1.5 s; history is 1 s
