@@ -135,12 +135,14 @@ MapInfo read_map_info(const JsonConfig& config, const std::string& pointer) {
                                      nlohmann::json(info.created).dump()));
   }
   const std::string source = pointer + "/source";
-  if (!config.has(source)) config.fail(source, "missing; expected typed, imported, surveyed or updated");
+  if (!config.has(source))
+    config.fail(source, "missing; expected typed, imported, surveyed, updated or merged");
   info.source = config.choice(
       {source, "",
        "required in format 2: where the positions come from: typed (by hand), imported (refloc-map import, "
-       "e.g. a total station), surveyed (refloc-survey), updated (refloc-map update)"},
-      "typed", {"typed", "imported", "surveyed", "updated"});
+       "e.g. a total station), surveyed (refloc-survey), updated (refloc-map update), merged (refloc-map "
+       "merge)"},
+      "typed", {"typed", "imported", "surveyed", "updated", "merged"});
   return info;
 }
 

@@ -104,10 +104,10 @@ TEST(ReflectorMapV2, HeaderKeysAreRequiredAndChecked) {
               HasSubstr("map.json: /created: missing"));
   EXPECT_THAT(error_of(v2(R"("format": 2, "map_id": "a", "version": 1, "created": "2026-12-03T06:30:58Z")")),
               HasSubstr("map.json: /source: missing"));
-  EXPECT_THAT(
-      error_of(v2(R"("format": 2, "map_id": "a", "version": 1, "created": "2026-12-03T06:30:58Z",
+  EXPECT_THAT(error_of(v2(R"("format": 2, "map_id": "a", "version": 1, "created": "2026-12-03T06:30:58Z",
                              "source": "guessed")")),
-      HasSubstr("map.json: /source: expected one of \"imported\", \"surveyed\", \"typed\", \"updated\""));
+              HasSubstr("map.json: /source: expected one of \"imported\", \"merged\", \"surveyed\", "
+                        "\"typed\", \"updated\""));
 }
 
 TEST(ReflectorMapV2, CreatedMustBeIso8601Utc) {

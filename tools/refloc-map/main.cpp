@@ -3,19 +3,22 @@
 //   export   a map's reflectors as CSV
 //   info     what a map holds
 //   update   the next version from the matcher's MAP_HEALTH evidence in an LCM log
+//   merge    one map from several surveys in the same frame
 // Each is an add_*_command / run_*_command pair in the library.
 // Exit 0 done, 2 bad input file (named with file and key or line), 64 usage error.
 
 #include "common/guarded_main.hpp"
 #include "common/program_version.hpp"
 #include "map_commands.hpp"
+#include "map_merge.hpp"
 #include "map_update.hpp"
 
 #include <CLI/CLI.hpp>
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "refloc-map: reflector map files: import from CSV, export to CSV, info, update from MAP_HEALTH"};
+      "refloc-map: reflector map files: import from CSV, export to CSV, info, update from MAP_HEALTH, merge "
+      "surveys"};
   refloc::add_version_flag(app, "refloc-map");
   app.require_subcommand(1);
   refloc::ImportCommandOptions import_options;
@@ -26,6 +29,8 @@ int main(int argc, char** argv) {
   CLI::App* info_command = refloc::add_info_command(app, info_options);
   refloc::UpdateCommandOptions update_options;
   CLI::App* update_command = refloc::add_update_command(app, update_options);
+  refloc::MergeCommandOptions merge_options;
+  CLI::App* merge_command = refloc::add_merge_command(app, merge_options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -36,6 +41,7 @@ int main(int argc, char** argv) {
     if (export_command->parsed()) return refloc::run_export_command(export_options);
     if (info_command->parsed()) return refloc::run_info_command(info_options);
     if (update_command->parsed()) return refloc::run_update_command(update_options);
+    if (merge_command->parsed()) return refloc::run_merge_command(merge_options);
     return refloc::kExitUsageError;
   });
 }

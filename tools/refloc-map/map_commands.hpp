@@ -2,7 +2,7 @@
 // refloc-map's subcommands: their options and what they run (main.cpp only dispatches).
 // import and export convert between CSV and format-2 maps, info describes a map. A subcommand is
 // a pair add_<name>_command (options into a struct) / run_<name>_command; `update` (the next
-// version from MAP_HEALTH evidence) is to be added the same way, in its own files.
+// version from MAP_HEALTH evidence) and `merge` (several surveys) are in their own files.
 
 #include "common/reflector_map.hpp"
 
