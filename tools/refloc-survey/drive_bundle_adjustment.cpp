@@ -2,6 +2,8 @@
 
 #include "drive_bundle_residuals.hpp"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -165,10 +167,17 @@ class Bundle {
     ceres::Covariance::Options options;
     options.num_threads = o_.threads;
     ceres::Covariance covariance(options);
+    std::vector<size_t> free;
+    for (size_t j = 0; j < landmarks_.size(); ++j)
+      if (problem_.HasParameterBlock(landmarks_[j].data()) &&
+          !problem_.IsParameterBlockConstant(landmarks_[j].data()))
+        free.push_back(j);
+    // The frame-free covariances need every pair of landmarks' blocks: a bounded number of them.
+    const bool joint = p_.anchors.empty() && free.size() >= 3 && free.size() <= kMaxJointLandmarks;
     std::vector<std::pair<const double*, const double*>> blocks;
-    for (auto& l : landmarks_)
-      if (problem_.HasParameterBlock(l.data()) && !problem_.IsParameterBlockConstant(l.data()))
-        blocks.emplace_back(l.data(), l.data());
+    for (size_t a = 0; a < free.size(); ++a)
+      for (size_t b = a; b < (joint ? free.size() : a + 1); ++b)
+        blocks.emplace_back(landmarks_[free[a]].data(), landmarks_[free[b]].data());
     const bool bias_free = problem_.HasParameterBlock(&bias_) && !problem_.IsParameterBlockConstant(&bias_);
     if (bias_free) blocks.emplace_back(&bias_, &bias_);
     if (!covariance.Compute(blocks, &problem_)) {
@@ -189,8 +198,43 @@ class Bundle {
       covariance.GetCovarianceBlock(&bias_, &bias_, &c);
       r.range_bias_sigma = std::sqrt(std::max(0.0, c));
     }
+    if (joint) frame_free_covariances(covariance, free, r);
     r.covariance_s = seconds_since(start);
   }
+
+  /// The landmarks' joint covariance projected onto what a rigid motion of the whole map cannot
+  /// change: P S P with P = I - J (J^T J)^-1 J^T, J the landmarks' motion under a translation and
+  /// a turn about their centroid (the unweighted rigid alignment `compare` makes).
+  void frame_free_covariances(const ceres::Covariance& covariance, const std::vector<size_t>& free,
+                              BundleResult& r) const {
+    const auto n = static_cast<Eigen::Index>(free.size());
+    Eigen::MatrixXd joint(2 * n, 2 * n);
+    for (Eigen::Index a = 0; a < n; ++a)
+      for (Eigen::Index b = a; b < n; ++b) {
+        double c[4];
+        covariance.GetCovarianceBlock(landmarks_[free[static_cast<size_t>(a)]].data(),
+                                      landmarks_[free[static_cast<size_t>(b)]].data(), c);
+        const Eigen::Matrix2d block = Eigen::Map<const Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(c);
+        joint.block<2, 2>(2 * a, 2 * b) = block;
+        joint.block<2, 2>(2 * b, 2 * a) = block.transpose();
+      }
+    Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+    for (size_t j : free) centroid += Eigen::Vector2d(landmarks_[j][0], landmarks_[j][1]);
+    centroid /= static_cast<double>(n);
+    Eigen::MatrixXd motion(2 * n, 3);
+    for (Eigen::Index a = 0; a < n; ++a) {
+      const auto& l = landmarks_[free[static_cast<size_t>(a)]];
+      motion.block<2, 3>(2 * a, 0) << 1.0, 0.0, -(l[1] - centroid.y()), 0.0, 1.0, l[0] - centroid.x();
+    }
+    const Eigen::MatrixXd projection =
+        Eigen::MatrixXd::Identity(2 * n, 2 * n) -
+        motion * (motion.transpose() * motion).ldlt().solve(motion.transpose());
+    const Eigen::MatrixXd frame_free = projection * joint * projection.transpose();
+    for (Eigen::Index a = 0; a < n; ++a)
+      r.landmarks[free[static_cast<size_t>(a)]].frame_free_covariance = frame_free.block<2, 2>(2 * a, 2 * a);
+  }
+
+  static constexpr size_t kMaxJointLandmarks = 200;
 
   const BundleProblem& p_;
   BundleOptions o_;

@@ -72,6 +72,10 @@ struct BundleOptions {
 struct BundleLandmark {
   Eigen::Vector2d map_p = Eigen::Vector2d::Zero();       ///< [m]
   Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();  ///< [m^2]; zero for an anchor
+  /// The covariance with the frame's own uncertainty taken out (a rigid motion of the whole map,
+  /// from holding the first pose): what localization in the map and a comparison after a rigid
+  /// alignment see. Zero when not computed (anchors hold the frame, or too many landmarks) [m^2].
+  Eigen::Matrix2d frame_free_covariance = Eigen::Matrix2d::Zero();
   int observations = 0;
   double residual_rms = 0.0;    ///< RMS of |e| over its observations at the solution [m]
   double normalised_rms = 0.0;  ///< RMS of the whitened residual [-]

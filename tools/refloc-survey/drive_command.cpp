@@ -149,6 +149,11 @@ CLI::App* add_drive_command(CLI::App& app, DriveCommandOptions& o) {
                 "repeats the same beams' errors; 0: every detection independent")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 10.0));
+  c->add_option("--scale-sigma-ppm", o.scale_sigma_ppm,
+                "without anchors: the map's scale error, std dev, added to each reflector's covariance along "
+                "its line from the map's centroid (the ranges alone set the scale); 0: none")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 100000.0));
   c->add_option("--same-view-range-m", o.same_view_range_m, "see --same-view-steps")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 10.0));
@@ -173,6 +178,7 @@ int run_drive_command(const DriveCommandOptions& o) {
   config.bundle.estimate_range_bias = o.estimate_range_bias;
   config.bundle.same_view_beam_steps = o.same_view_beam_steps;
   config.bundle.same_view_range_m = o.same_view_range_m;
+  config.scale_sigma_ppm = o.scale_sigma_ppm;
   const Pose2 start_pose{o.start_pose[0], o.start_pose[1], o.start_pose[2]};
   const DriveSurveyResult survey =
       run_drive_survey(scans, robot.robot_T_laser, robot.odometry_noise, start_pose, anchors, config);

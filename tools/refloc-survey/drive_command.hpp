@@ -31,6 +31,7 @@ struct DriveCommandOptions {
   /// BundleOptions::same_view_beam_steps (0: every detection independent) [beam steps].
   double same_view_beam_steps = 0.5;
   double same_view_range_m = 0.05;  ///< BundleOptions::same_view_range_m [m]
+  double scale_sigma_ppm = 200.0;   ///< DriveSurveyConfig::scale_sigma_ppm [1e-6]
   bool force = false;               ///< replace an existing out_path
 };
 

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 #include <filesystem>
@@ -155,6 +156,10 @@ std::string survey_report_text(const DriveSurveyResult& s) {
   text +=
       "   id        x_m        y_m  sigma_mm (major/minor)  detections  scans seen/in view  residual_rms_mm  "
       "norm_rms  surface_mm\n";
+  const bool frame_free =
+      std::any_of(s.reflectors.begin(), s.reflectors.end(), [](const SurveyedReflector& r) {
+        return !r.anchor && (r.covariance - r.frame_covariance).norm() > 0.0;
+      });
   for (const SurveyedReflector& r : s.reflectors) {
     const Eigen::Vector2d sigma = sigmas(r.covariance);
     text += fmt::format(
@@ -163,6 +168,21 @@ std::string survey_report_text(const DriveSurveyResult& s) {
         r.id, r.map_p.x(), r.map_p.y(), sigma(0) * 1e3, sigma(1) * 1e3, r.anchor ? " (anchor)" : "",
         r.times_seen, r.scans_seen, r.scans_expected, r.residual_rms * 1e3, r.normalised_rms,
         r.surface_clearance * 1e3);
+  }
+  if (frame_free) {
+    std::vector<double> majors, frame_majors;
+    for (const SurveyedReflector& r : s.reflectors) {
+      if (r.anchor) continue;
+      majors.push_back(sigmas(r.covariance)(0));
+      frame_majors.push_back(sigmas(r.frame_covariance)(0));
+    }
+    std::sort(majors.begin(), majors.end());
+    std::sort(frame_majors.begin(), frame_majors.end());
+    text += fmt::format(
+        "sigma: frame-free (the start pose's own uncertainty, a rigid motion of the whole map, taken out: "
+        "what localization in this map sees), the map's scale uncertainty (--scale-sigma-ppm) in; median "
+        "major {:.2f} mm; with the frame's: {:.2f} mm\n",
+        majors[majors.size() / 2] * 1e3, frame_majors[frame_majors.size() / 2] * 1e3);
   }
   text += fmt::format("range bias (measured - true range): {:+.2f} mm, sigma {:.2f} mm\n", s.range_bias * 1e3,
                       s.range_bias_sigma * 1e3);

@@ -66,6 +66,19 @@ std::vector<BundleAnchor> place_anchors(const std::vector<SurveyAnchor>& anchors
   return out;
 }
 
+/// DriveSurveyConfig::scale_sigma_ppm: sigma^2 (p - c)(p - c)^T added to each covariance.
+void add_scale_uncertainty(double scale_sigma, std::vector<SurveyedReflector>& reflectors) {
+  if (!(scale_sigma > 0.0) || reflectors.empty()) return;
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  for (const SurveyedReflector& r : reflectors) centroid += r.map_p;
+  centroid /= static_cast<double>(reflectors.size());
+  for (SurveyedReflector& r : reflectors) {
+    const Eigen::Vector2d d = r.map_p - centroid;
+    r.covariance += scale_sigma * scale_sigma * d * d.transpose();
+    r.frame_covariance += scale_sigma * scale_sigma * d * d.transpose();
+  }
+}
+
 /// Returns the id of every landmark (0: not mapped).
 std::vector<int> fill_reflectors(const BundleResult& b, const TrackerResult& front,
                                  const std::vector<VisibilityCount>& visibility,
@@ -89,7 +102,8 @@ std::vector<int> fill_reflectors(const BundleResult& b, const TrackerResult& fro
       r.id = next_id++;
     }
     r.map_p = l.map_p;
-    r.covariance = l.covariance;
+    r.frame_covariance = l.covariance;
+    r.covariance = l.frame_free_covariance.trace() > 0.0 ? l.frame_free_covariance : l.covariance;
     r.times_seen = l.observations;
     r.scans_expected = visibility[j].expected;
     r.scans_seen = visibility[j].seen;
@@ -239,6 +253,7 @@ DriveSurveyResult run_drive_survey(const std::vector<DriveScan>& scans, const Po
       fill_reflectors(b, front, visibility, clearance, anchors, anchor_of_landmark, out);
   fill_observations(scans, problem, b, ids, out);
   fill_rejected(front, b, config.tracker.promotion, reasons, out);
+  if (anchors.empty()) add_scale_uncertainty(config.scale_sigma_ppm * 1e-6, out.reflectors);
 
   add_warnings(out);
   return out;

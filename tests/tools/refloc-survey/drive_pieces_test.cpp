@@ -84,6 +84,29 @@ TEST(BundleAdjustment, RecoversLandmarksAndRangeOffsetFromNoiseFreeObservations)
   EXPECT_GT(r.range_bias_sigma, 0.0);
 }
 
+TEST(BundleAdjustment, FrameFreeCovariancesLeaveOutTheHeldPosesUncertainty) {
+  // The first pose held: the landmarks far from it carry its heading's uncertainty, which a
+  // rigid alignment (and localization in the map) removes; the frame-free covariance does not
+  // have it. With anchors the anchors are the frame: no frame-free covariance is computed.
+  const BundleProblem p = synthetic_problem(0.0);
+  const BundleResult r = adjust_bundle(p, BundleOptions{});
+  ASSERT_TRUE(r.ok) << r.message;
+  for (const BundleLandmark& l : r.landmarks) {
+    EXPECT_GT(l.frame_free_covariance.determinant(), 0.0);
+    EXPECT_LT(l.frame_free_covariance.trace(), l.covariance.trace());
+  }
+  // Landmark 2 at (8, 4) is the farthest from the held pose at (0, 1): its frame share is the largest.
+  EXPECT_GT(r.landmarks[2].covariance.trace() / r.landmarks[2].frame_free_covariance.trace(),
+            r.landmarks[0].covariance.trace() / r.landmarks[0].frame_free_covariance.trace());
+  BundleProblem anchored = p;
+  const std::vector<Eigen::Vector2d> truth = synthetic_problem(0.0).map_p_landmark;
+  anchored.anchors = {{0, truth[0]}, {2, truth[2]}};
+  const BundleResult a = adjust_bundle(anchored, BundleOptions{});
+  ASSERT_TRUE(a.ok) << a.message;
+  EXPECT_EQ(a.landmarks[4].frame_free_covariance, Eigen::Matrix2d::Zero());
+  EXPECT_GT(a.landmarks[4].covariance.determinant(), 0.0);
+}
+
 TEST(BundleAdjustment, AnchorsHoldTheirLandmarksAndFreeTheFirstPose) {
   BundleProblem p = synthetic_problem(0.0);
   const std::vector<Eigen::Vector2d> truth = synthetic_problem(0.0).map_p_landmark;
