@@ -1,6 +1,5 @@
 #include "map_merge.hpp"
 
-#include "common/guarded_main.hpp"
 #include "common/json_config.hpp"
 #include "common/output_file.hpp"
 
@@ -23,7 +22,6 @@ struct Merged {
   MapReflector reflector;
   Eigen::Vector2d weighted_sum = Eigen::Vector2d::Zero();
   double weight = 0.0;
-  int maps = 1;
 };
 
 void add_entry(Merged& m, const MapReflector& r) {
@@ -49,7 +47,7 @@ MapMergePlan plan_map_merge(const std::vector<ReflectorMap>& maps, const std::ve
   std::vector<Merged> merged;
   int next_id = 0;
   for (const MapReflector& r : maps.front().reflectors) {
-    merged.push_back({r, Eigen::Vector2d::Zero(), 0.0, 1});
+    merged.push_back({r, Eigen::Vector2d::Zero(), 0.0});
     add_entry(merged.back(), r);
     next_id = std::max(next_id, r.id + 1);
   }
@@ -57,7 +55,8 @@ MapMergePlan plan_map_merge(const std::vector<ReflectorMap>& maps, const std::ve
     plan.merged.occluders.insert(plan.merged.occluders.end(), maps[k].occluders.begin(),
                                  maps[k].occluders.end());
   for (size_t k = 1; k < maps.size(); ++k) {
-    std::vector<int> taken_by(merged.size(), -1);  // the id in map k that merged into entry j
+    // The id in map k that merged into (or was added as) entry j: one per entry and map.
+    std::vector<int> taken_by(merged.size(), -1);
     for (const MapReflector& r : maps[k].reflectors) {
       size_t nearest = merged.size();
       double nearest_d = std::numeric_limits<double>::infinity();
@@ -77,18 +76,18 @@ MapMergePlan plan_map_merge(const std::vector<ReflectorMap>& maps, const std::ve
         taken_by[nearest] = r.id;
         Merged& m = merged[nearest];
         add_entry(m, r);
-        ++m.maps;
         plan.lines.push_back(fmt::format("reflector {}: {} reflector {} is {:.1f} mm from it: averaged",
                                          m.reflector.id, names[k], r.id, nearest_d * 1e3));
         ++plan.averaged;
       } else {
-        Merged m{r, Eigen::Vector2d::Zero(), 0.0, 1};
+        Merged m{r, Eigen::Vector2d::Zero(), 0.0};
         m.reflector.id = next_id++;
         add_entry(m, r);
         plan.lines.push_back(
             fmt::format("reflector {}: {} reflector {} at ({:.3f}, {:.3f}) matches none: added",
                         m.reflector.id, names[k], r.id, r.map_p_center.x(), r.map_p_center.y()));
         merged.push_back(std::move(m));
+        taken_by.push_back(r.id);
         ++plan.added;
       }
     }

@@ -74,8 +74,9 @@ void add_scale_uncertainty(double scale_sigma, std::vector<SurveyedReflector>& r
   centroid /= static_cast<double>(reflectors.size());
   for (SurveyedReflector& r : reflectors) {
     const Eigen::Vector2d d = r.map_p - centroid;
-    r.covariance += scale_sigma * scale_sigma * d * d.transpose();
-    r.frame_covariance += scale_sigma * scale_sigma * d * d.transpose();
+    const Eigen::Matrix2d scale_part = scale_sigma * scale_sigma * d * d.transpose();
+    r.covariance += scale_part;
+    r.frame_covariance += scale_part;
   }
 }
 

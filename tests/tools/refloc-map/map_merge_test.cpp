@@ -67,6 +67,21 @@ TEST(MapMerge, TwoEntriesOfOneMapOnOneReflectorAreRefused) {
   }
 }
 
+TEST(MapMerge, TwoNewEntriesOfOneMapOnOnePlaceAreRefusedToo) {
+  // Neither matches the first map; the second lies within the gate of the first one's new entry.
+  const ReflectorMap a =
+      survey({reflector(1, 1.0, 0.1, 0.002), reflector(2, 3.0, 0.1, 0.002), reflector(3, 0.1, 2.0, 0.002)});
+  const ReflectorMap b =
+      survey({reflector(5, 3.9, 2.0, 0.002), reflector(6, 3.9, 2.05, 0.002), reflector(7, 1.0, 0.1, 0.002)});
+  try {
+    plan_map_merge({a, b}, {"a.json", "b.json"}, 0.1, "2026-12-06T00:00:00Z");
+    FAIL() << "no error";
+  } catch (const ConfigError& e) {
+    EXPECT_THAT(e.what(),
+                HasSubstr("b.json: reflectors 5 and 6 both lie within --gate-m 0.100 m of reflector 4"));
+  }
+}
+
 TEST(MapMerge, TheBinaryWritesTheMergedMapAndRefusesToOverwriteOrOneMap) {
   const auto dir =
       std::filesystem::temp_directory_path() / ("refloc_map_merge_" + std::to_string(::getpid()));
