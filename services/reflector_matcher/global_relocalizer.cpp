@@ -188,7 +188,9 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
       result.runner_up_map_T_laser = s.map_T_laser;
     }
     const double margin = best_score - s.score;
-    if (margin < (1.0 - relocalization_.ambiguity_ratio) * best_matched ||
+    const double ratio_margin = std::min((1.0 - relocalization_.ambiguity_ratio) * best_matched,
+                                         relocalization_.ambiguity_max_margin);
+    if (margin < ratio_margin ||
         (s.matched >= best_matched && margin < relocalization_.ambiguity_missed_margin))
       rivals_.push_back(s.map_T_laser);
   }

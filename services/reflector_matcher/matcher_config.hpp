@@ -95,6 +95,12 @@ struct RelocalizationConfig {
   /// A pose explaining as many detections as the best is a rival unless the best scores at
   /// least this much higher (0.5 per unseen reflector: 2.0 = four more unseen) [-].
   double ambiguity_missed_margin = 2.0;
+  /// Caps the first rule's (1 - ratio) x explained: a pose scoring at least this much below the
+  /// best is no rival however many detections the best explains. One detection the best
+  /// explains and the rival cannot is worth 1.25 (1 + unexplained_penalty) whether 4 or 12
+  /// reflectors are in view; a larger view does not make that evidence weaker. Below 1.25 it
+  /// changes only views of 7 or more explained detections (README, "The rival rule's cap") [-].
+  double ambiguity_max_margin = 1.2;
   double distinct_pose_distance = 0.2;  ///< _m: a runner-up must differ at least this much ... [m]
   double distinct_pose_angle = 5.0 * M_PI / 180.0;  ///< _deg: ... or this much from the best [rad]
 };

@@ -224,6 +224,11 @@ MatcherServiceConfig parse_matcher_service_config(const JsonConfig& config, cons
                      "a distinct pose explaining as many detections is a rival unless the best scores this "
                      "much higher (0.5 per unseen reflector)"},
                     m.relocalization.ambiguity_missed_margin, 0.0, 100.0);
+  m.relocalization.ambiguity_max_margin = config.number(
+      {"/relocalization/ambiguity_max_margin", "",
+       "caps (1 - ambiguity_ratio) x explained: a pose scoring this much below the best is no "
+       "rival however many detections are seen (1.25 = one detection the rival cannot explain)"},
+      m.relocalization.ambiguity_max_margin, 0.0, 100.0);
   m.relocalization.distinct_pose_distance =
       config.number({"/relocalization/distinct_pose_distance_m", "m",
                      "a pose farther than this from the best (or turned by more than "

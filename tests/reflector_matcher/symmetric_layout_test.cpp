@@ -93,5 +93,39 @@ TEST(SymmetricLayout, OneExtraReflectorBreaksTheSymmetry) {
   EXPECT_FALSE(testing::is_wrong_ok(result, scan, map, truth));
 }
 
+TEST(SymmetricLayout, OneExtraReflectorAmongManyDecidesUnderTheMarginCap) {
+  // Ten reflectors symmetric under a 180 deg turn plus one that is not: the turned pose explains
+  // ten of eleven detections, 1.25 (or 1.75 when it also expects the extra) below the true pose.
+  // The ratio rule alone asks a lead of 0.2 x 11 = 2.2 and calls that AMBIGUOUS; the cap says one
+  // detection only one pose explains decides, however many reflectors are in view.
+  ReflectorMap map = grid_layout(5, 2, 2.0, 4.0);
+  MapReflector extra;
+  extra.id = 99;
+  extra.map_p_center = {1.0, 4.0};
+  map.reflectors.push_back(extra);
+  const Pose2 truth{4.3, -2.0, M_PI / 2};  // outside, facing the layout: all eleven in view
+  std::mt19937 rng(19);
+  const auto scan = testing::render_detections(map, truth, testing::SyntheticSensor{}, rng);
+  ASSERT_EQ(scan.detections.size(), 11u);
+  MatchResult result;
+  MatcherConfig uncapped;
+  uncapped.relocalization.ambiguity_max_margin = 100.0;
+  ReflectorMatcher(map, uncapped).match(scan.detections, nullptr, result);
+  EXPECT_EQ(result.status, MatchStatus::kAmbiguous);
+  const MatcherConfig capped;  // the default cap, 1.2
+  ReflectorMatcher(map, capped).match(scan.detections, nullptr, result);
+  EXPECT_EQ(result.status, MatchStatus::kOk);
+  EXPECT_EQ(result.matches.size(), 11u);
+  EXPECT_FALSE(testing::is_wrong_ok(result, scan, map, truth));
+  // Without the extra reflector's detection the cap changes nothing: a tie stays AMBIGUOUS.
+  std::vector<ReflectorDetection> symmetric_only;
+  for (size_t k = 0; k < scan.detections.size(); ++k)
+    if (scan.map_index[k] != static_cast<int>(map.reflectors.size()) - 1)
+      symmetric_only.push_back(scan.detections[k]);
+  ASSERT_EQ(symmetric_only.size(), 10u);
+  ReflectorMatcher(map, capped).match(symmetric_only, nullptr, result);
+  EXPECT_EQ(result.status, MatchStatus::kAmbiguous);
+}
+
 }  // namespace REFLOC_UNITY_ID
 }  // namespace refloc
