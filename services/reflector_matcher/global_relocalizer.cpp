@@ -179,6 +179,8 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
   // explains as many detections and loses only on a few unseen reflectors: unmapped racks
   // and people hide reflectors, so "not seen" is weak evidence.
   double runner_up = -1e300;
+  const double ratio_margin =
+      std::min((1.0 - relocalization_.ambiguity_ratio) * best_matched, relocalization_.ambiguity_max_margin);
   for (const Scored& s : scored_) {
     if (approx_equal(s.map_T_laser, best_pose, relocalization_.distinct_pose_distance,
                      relocalization_.distinct_pose_angle))
@@ -188,8 +190,6 @@ void GlobalRelocalizer::relocalize(const std::vector<ReflectorDetection>& detect
       result.runner_up_map_T_laser = s.map_T_laser;
     }
     const double margin = best_score - s.score;
-    const double ratio_margin = std::min((1.0 - relocalization_.ambiguity_ratio) * best_matched,
-                                         relocalization_.ambiguity_max_margin);
     if (margin < ratio_margin ||
         (s.matched >= best_matched && margin < relocalization_.ambiguity_missed_margin))
       rivals_.push_back(s.map_T_laser);
